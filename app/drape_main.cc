@@ -1,0 +1,27 @@
+// `drape`: Drape Studio's command line.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "app/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Drape Studio: nonlinear shell simulation of fabric parts", "drape"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "drape 0.1.0");
+
+  drape::app::CommandRunner runner;
+  drape::app::AddValidateCommand(app, runner);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 1;  // bad command line = invalid input
+  }
+  return runner();
+}

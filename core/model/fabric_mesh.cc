@@ -1,0 +1,52 @@
+#include "core/model/fabric_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/model/imperfection.h"
+#include "core/model/outline_geometry.h"
+#include "core/model/scene_error.h"
+
+namespace drape {
+
+std::array<int, 2> RectangleElementCounts(const RectangleOutline& rectangle, double element_size) {
+  auto count = [&](double length) {
+    return std::max(1, static_cast<int>(std::lround(length / element_size)));
+  };
+  return {count(rectangle.size[0]), count(rectangle.size[1])};
+}
+
+Mesh MeshFabric(const Fabric& fabric) {
+  Mesh mesh;
+  try {
+    if (const auto* r = std::get_if<RectangleOutline>(&fabric.outline)) {
+      auto n = fabric.mesh.elements ? *fabric.mesh.elements
+                                    : RectangleElementCounts(*r, *fabric.mesh.size);
+      mesh = MeshRectangle(
+          r->size[0], r->size[1], {r->center[0], r->center[1]}, n[0], n[1], fabric.elevation);
+    } else if (const auto* d = std::get_if<DiskOutline>(&fabric.outline)) {
+      mesh = MeshDisk(d->radius, {d->center[0], d->center[1]}, *fabric.mesh.size, fabric.elevation);
+    } else {
+      std::vector<Eigen::Vector2d> vertices;
+      for (const auto& v : std::get<PolygonOutline>(fabric.outline).vertices)
+        vertices.emplace_back(v[0], v[1]);
+      mesh = MeshPolygon(vertices, *fabric.mesh.size, fabric.elevation);
+    }
+  } catch (const MeshError& e) {
+    throw SceneError(
+        std::holds_alternative<PolygonOutline>(fabric.outline) ? "fabric.outline" : "fabric.mesh",
+        e.what());
+  }
+  if (fabric.imperfection && fabric.imperfection->amplitude > 0) {
+    const ImperfectionSpec& spec = *fabric.imperfection;
+    Bounds2 b = OutlineBounds(fabric.outline);
+    double wavelength =
+        spec.wavelength.value_or(0.25 * std::max(b.max[0] - b.min[0], b.max[1] - b.min[1]));
+    Eigen::Matrix<double, Eigen::Dynamic, 2> xy = mesh.positions.leftCols<2>();
+    mesh.positions.col(2).array() +=
+        ImperfectionOffsets(xy, spec.amplitude, spec.seed, spec.pattern, wavelength).array();
+  }
+  return mesh;
+}
+
+}  // namespace drape

@@ -1,0 +1,488 @@
+// MeshDisk and MeshPolygon: all-quad meshes through Gmsh's C++ API.
+//
+// Gmsh keeps global state, so every use is serialised by one mutex and each
+// call runs in its own initialize ... finalize session (config files not
+// read, so a user's gmshrc cannot change the mesh). Its output is then put
+// into a canonical form that depends only on node positions, not on Gmsh's
+// internal tags: nodes and elements numbered in rows of increasing y, then x;
+// each quad counter-clockwise from +z and starting at its lowest node.
+//
+// Options, measured on Debian's Gmsh 4.8.4 over disks, an L and a concave
+// cutting pattern with element sizes from 1/50 to 1/3 of the part:
+// - Mesh.Algorithm 6 (Frontal-Delaunay). Algorithm 8 (Frontal-Delaunay for
+//   quads) segfaults in this build: its cross field needs ANN, which Debian's
+//   Gmsh is built without (MElementOctree::find on an unset octree).
+// - Mesh.RecombinationAlgorithm 2 ("simple full-quad"): recombine, then split
+//   every element into quads, so no triangle remains. Blossom (1, or 3 for
+//   full-quad) gives slightly better angles but its time grows steeply (3 s
+//   at 37 k quads, 170 s at 145 k); simple full-quad takes 8 s at 155 k.
+//   Mesh.SubdivisionAlgorithm stays 0: full-quad has already split.
+// - Worst measured: smallest angle 37°, largest 139°, aspect ratio 2.8; mean
+//   edge 0.8–0.9 × element_size. Full-quad gives each curve a multiple of 4
+//   segments (an even number before the split), so a curve only a few
+//   element sizes long gets shorter edges than asked (a quarter arc of 5.2 h:
+//   8 segments, mean edge 0.5 h).
+// - General.AbortOnError 1: an error thrown inside Gmsh's OpenMP region
+//   would terminate the process, so meshing stops and the error is read from
+//   the logger instead.
+#include "core/model/mesh.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace drape {
+namespace {
+
+// Upper bound on the estimated element count (area / element_size²).
+constexpr double kMaxEstimatedElements = 2e6;
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::mutex& GmshMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+// Shortest text that reads back as `value` (0.1, not 0.10000000000000001).
+std::string Format(double value) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+std::string Violation(const char* function,
+                      const std::string& name,
+                      double value,
+                      const std::string& constraint) {
+  return std::string(function) + ": " + name + " = " + Format(value) +
+         ". Violated constraint: " + constraint;
+}
+
+void RequirePositiveFinite(const char* function, const char* name, double value) {
+  if (!(std::isfinite(value) && value > 0))
+    throw MeshError(Violation(function, name, value, "finite and > 0"));
+}
+
+void RequireFinite(const char* function, const std::string& name, double value) {
+  if (!std::isfinite(value)) throw MeshError(Violation(function, name, value, "finite"));
+}
+
+void RequireFeasibleCount(const char* function, double area, double element_size) {
+  const double estimate = area / (element_size * element_size);
+  if (!(estimate <= kMaxEstimatedElements)) {
+    throw MeshError(Violation(function,
+                              "element_size",
+                              element_size,
+                              "area / element_size² <= " + Format(kMaxEstimatedElements) +
+                                  " elements (the part's area is " + Format(area) +
+                                  " m², which would need about " + Format(std::round(estimate)) +
+                                  " elements)"));
+  }
+}
+
+double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+double ShoelaceArea(const std::vector<Eigen::Vector2d>& outline) {
+  double twice = 0;
+  for (std::size_t i = 0; i < outline.size(); ++i)
+    twice += Cross(outline[i], outline[(i + 1) % outline.size()]);
+  return 0.5 * twice;
+}
+
+// Whether the closed segments pq and rs share a point. `zero` is the
+// magnitude below which an orientation (a cross product) counts as collinear.
+bool SegmentsTouch(const Eigen::Vector2d& p,
+                   const Eigen::Vector2d& q,
+                   const Eigen::Vector2d& r,
+                   const Eigen::Vector2d& s,
+                   double zero) {
+  auto orientation =
+      [zero](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+        const double o = Cross(b - a, c - a);
+        return o > zero ? 1 : (o < -zero ? -1 : 0);
+      };
+  auto within = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    // c lies in the bounding box of ab (used when a, b, c are collinear).
+    return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) &&
+           std::min(a.y(), b.y()) <= c.y() && c.y() <= std::max(a.y(), b.y());
+  };
+  const int o1 = orientation(p, q, r);
+  const int o2 = orientation(p, q, s);
+  const int o3 = orientation(r, s, p);
+  const int o4 = orientation(r, s, q);
+  if (o1 != o2 && o3 != o4) return true;
+  if (o1 == 0 && within(p, q, r)) return true;
+  if (o2 == 0 && within(p, q, s)) return true;
+  if (o3 == 0 && within(r, s, p)) return true;
+  if (o4 == 0 && within(r, s, q)) return true;
+  return false;
+}
+
+std::string Edge(std::size_t i, std::size_t n) {
+  return "edge " + std::to_string(i) + " (vertices " + std::to_string(i) + "-" +
+         std::to_string((i + 1) % n) + ")";
+}
+
+// Rejects what Gmsh cannot mesh or would mesh wrongly: too few vertices,
+// non-finite or repeated vertices, an outline that folds back or crosses
+// itself, no area. O(n²), which is nothing next to meshing.
+void ValidateOutline(const std::vector<Eigen::Vector2d>& outline) {
+  constexpr const char* kFunction = "MeshPolygon";
+  const std::size_t n = outline.size();
+  if (n < 3) {
+    throw MeshError(Violation(
+        kFunction, "outline.size()", static_cast<double>(n), "a polygon has at least 3 vertices"));
+  }
+  Eigen::Vector2d lo = outline[0], hi = outline[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    RequireFinite(kFunction, "outline[" + std::to_string(i) + "].x", outline[i].x());
+    RequireFinite(kFunction, "outline[" + std::to_string(i) + "].y", outline[i].y());
+    lo = lo.cwiseMin(outline[i]);
+    hi = hi.cwiseMax(outline[i]);
+  }
+  const double size = (hi - lo).norm();
+  const double same_point = 1e-12 * size;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if ((outline[i] - outline[j]).norm() <= same_point) {
+        throw MeshError(std::string(kFunction) + ": outline vertices " + std::to_string(i) +
+                        " and " + std::to_string(j) + " are the same point (" +
+                        Format(outline[i].x()) + ", " + Format(outline[i].y()) +
+                        "); give each vertex once and do not close the outline");
+      }
+    }
+  }
+  const double zero = 1e-12 * size * size;
+  for (std::size_t i = 0; i < n; ++i) {
+    // Consecutive edges meet at vertex i + 1; they overlap if they are
+    // collinear and leave that vertex in the same direction.
+    const Eigen::Vector2d& a = outline[i];
+    const Eigen::Vector2d& b = outline[(i + 1) % n];
+    const Eigen::Vector2d& c = outline[(i + 2) % n];
+    if (std::abs(Cross(a - b, c - b)) <= zero && (a - b).dot(c - b) > 0) {
+      throw MeshError(std::string(kFunction) + ": the outline folds back on itself at vertex " +
+                      std::to_string((i + 1) % n) + "; the outline must be a simple polygon");
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
+      if (SegmentsTouch(outline[i], outline[(i + 1) % n], outline[j], outline[(j + 1) % n], zero)) {
+        throw MeshError(std::string(kFunction) + ": outline " + Edge(i, n) + " and " + Edge(j, n) +
+                        " intersect; the outline must be a simple polygon");
+      }
+    }
+  }
+  if (!(std::abs(ShoelaceArea(outline)) > zero)) {
+    throw MeshError(std::string(kFunction) + ": the outline encloses no area");
+  }
+}
+
+// For error messages: the outline's narrowest gap, the shortest distance from
+// a vertex to an edge not incident to it (two disjoint segments are nearest at
+// an endpoint of one of them), against the element size.
+std::string NarrowestGapNote(const std::vector<Eigen::Vector2d>& outline, double element_size) {
+  const std::size_t n = outline.size();
+  double gap = std::numeric_limits<double>::infinity();
+  std::size_t vertex = 0, edge = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    for (std::size_t e = 0; e < n; ++e) {
+      if (e == v || (e + 1) % n == v) continue;  // edge e runs from vertex e to e + 1
+      const Eigen::Vector2d& a = outline[e];
+      const Eigen::Vector2d& b = outline[(e + 1) % n];
+      const double t = std::clamp((outline[v] - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      const double d = (a + t * (b - a) - outline[v]).norm();
+      if (d < gap) {
+        gap = d;
+        vertex = v;
+        edge = e;
+      }
+    }
+  }
+  if (!std::isfinite(gap)) return "";
+  return "; the outline's narrowest gap is " + Format(gap) + " (vertex " + std::to_string(vertex) +
+         " to " + Edge(edge, n) + ") against element_size = " + Format(element_size) +
+         ": give an element_size well below that gap";
+}
+
+// Makes the end of an error message, only when there is an error.
+using Note = std::function<std::string()>;
+
+// What Gmsh returns, before canonical numbering.
+struct RawMesh {
+  std::vector<Eigen::Vector2d> nodes;
+  std::vector<std::array<int, 4>> quads;
+  std::size_t other_elements = 0;  // triangles or anything else that is not a 4-node quad
+  std::string warnings;            // Gmsh's warnings, for error messages
+};
+
+// One initialize ... finalize session; the caller holds GmshMutex().
+class GmshSession {
+ public:
+  GmshSession() {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::logger::start();
+  }
+  ~GmshSession() {
+    try {
+      gmsh::logger::stop();
+      gmsh::finalize();
+    } catch (...) {
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+  // This session's messages that start with `level` ("Error", "Warning"),
+  // joined by "; ".
+  static std::string Messages(const char* level) {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    std::string joined;
+    for (const std::string& line : log) {
+      if (line.rfind(level, 0) == 0) joined += (joined.empty() ? "" : "; ") + line;
+    }
+    return joined;
+  }
+};
+
+void SetOptions() {
+  gmsh::option::setNumber("General.Terminal", 0);      // silent
+  gmsh::option::setNumber("General.Verbosity", 2);     // the logger keeps errors and warnings
+  gmsh::option::setNumber("General.AbortOnError", 1);  // stop meshing, do not throw
+  gmsh::option::setNumber("General.NumThreads", 1);
+  gmsh::option::setNumber("Mesh.RandomSeed", 1);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);  // simple full-quad
+  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);    // full-quad already splits
+  gmsh::option::setNumber("Mesh.Smoothing", 1);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+}
+
+// Meshes the plane surface bounded by the curves `add_curves` adds to the geo
+// kernel (returning their tags in loop order); the curves' points carry the
+// mesh size. `note()` ends error messages.
+template <typename AddCurves>
+RawMesh RunGmsh(const char* function, const Note& note, AddCurves add_curves) {
+  std::lock_guard<std::mutex> lock(GmshMutex());
+  RawMesh raw;
+  std::string errors;
+  try {
+    GmshSession session;
+    SetOptions();
+    gmsh::model::add("drape");
+    const std::vector<int> curves = add_curves();
+    const int loop = gmsh::model::geo::addCurveLoop(curves);
+    const int surface = gmsh::model::geo::addPlaneSurface({loop});
+    gmsh::model::geo::mesh::setRecombine(2, surface);
+    gmsh::model::geo::synchronize();
+    gmsh::model::mesh::generate(2);
+    errors = GmshSession::Messages("Error");
+    raw.warnings = GmshSession::Messages("Warning");
+
+    std::vector<std::size_t> node_tags;
+    std::vector<double> coords, parametric;
+    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+    std::unordered_map<std::size_t, int> index;
+    index.reserve(node_tags.size());
+    raw.nodes.reserve(node_tags.size());
+    for (std::size_t i = 0; i < node_tags.size(); ++i) {
+      index.emplace(node_tags[i], static_cast<int>(i));
+      raw.nodes.emplace_back(coords[3 * i], coords[3 * i + 1]);
+    }
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+    gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, -1);
+    for (std::size_t t = 0; t < types.size(); ++t) {
+      if (types[t] == 3) {  // 4-node quadrangle
+        for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
+          std::array<int, 4> quad;
+          for (int k = 0; k < 4; ++k) quad[k] = index.at(element_nodes[t][4 * e + k]);
+          raw.quads.push_back(quad);
+        }
+      } else {
+        raw.other_elements += element_tags[t].size();
+      }
+    }
+  } catch (const std::string& e) {  // Gmsh 4.8 throws its messages as strings
+    errors += (errors.empty() ? "" : "; ") + e;
+  } catch (const std::exception& e) {
+    errors += (errors.empty() ? "" : "; ") + std::string(e.what());
+  }
+  if (!errors.empty()) throw MeshError(std::string(function) + ": Gmsh failed: " + errors + note());
+  if (raw.quads.empty())
+    throw MeshError(std::string(function) + ": Gmsh returned no quads" + note());
+  return raw;
+}
+
+// Indices of `points` in rows of increasing y (points whose y is within `tol`
+// of the row's first y form one row), each row in increasing x.
+std::vector<int> RowOrder(const std::vector<Eigen::Vector2d>& points, double tol) {
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto by_y = [&](int a, int b) {
+    if (points[a].y() != points[b].y()) return points[a].y() < points[b].y();
+    return points[a].x() < points[b].x();
+  };
+  auto by_x = [&](int a, int b) {
+    if (points[a].x() != points[b].x()) return points[a].x() < points[b].x();
+    return points[a].y() < points[b].y();
+  };
+  std::stable_sort(order.begin(), order.end(), by_y);
+  for (std::size_t first = 0; first < order.size();) {
+    std::size_t last = first + 1;
+    while (last < order.size() && points[order[last]].y() - points[order[first]].y() <= tol) ++last;
+    std::stable_sort(order.begin() + first, order.begin() + last, by_x);
+    first = last;
+  }
+  return order;
+}
+
+// Checks that Gmsh gave only strictly convex quads, then numbers them
+// canonically. `note()` ends error messages.
+Mesh Canonical(const char* function, const RawMesh& raw, double elevation, const Note& note) {
+  const std::string gmsh_says = raw.warnings.empty() ? "" : " (Gmsh: " + raw.warnings + ")";
+  if (raw.other_elements > 0) {
+    // Full-quad recombination splits every element into quads; only an
+    // outline far narrower somewhere than element_size has left others.
+    throw MeshError(std::string(function) + ": Gmsh left " + std::to_string(raw.other_elements) +
+                    " elements that are not quads" + note() + gmsh_says);
+  }
+  // Keep only nodes that some quad uses (the disk's centre point, for one, is not).
+  std::vector<char> used(raw.nodes.size(), 0);
+  for (const auto& quad : raw.quads)
+    for (int n : quad) used[n] = 1;
+  std::vector<int> kept;
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for (std::size_t n = 0; n < raw.nodes.size(); ++n) {
+    if (!used[n]) continue;
+    kept.push_back(static_cast<int>(n));
+    lo = lo.cwiseMin(raw.nodes[n]);
+    hi = hi.cwiseMax(raw.nodes[n]);
+  }
+  const double tol = 1e-9 * (hi - lo).norm();
+
+  std::vector<Eigen::Vector2d> points;
+  points.reserve(kept.size());
+  for (int n : kept) points.push_back(raw.nodes[n]);
+  const std::vector<int> node_order = RowOrder(points, tol);
+  std::vector<int> new_index(raw.nodes.size(), -1);
+  Mesh mesh;
+  mesh.positions.resize(static_cast<Eigen::Index>(node_order.size()), 3);
+  for (std::size_t i = 0; i < node_order.size(); ++i) {
+    const int old = kept[node_order[i]];
+    new_index[old] = static_cast<int>(i);
+    mesh.positions.row(i) << raw.nodes[old].x(), raw.nodes[old].y(), elevation;
+  }
+
+  std::vector<std::array<int, 4>> quads;
+  std::vector<Eigen::Vector2d> centroids;
+  quads.reserve(raw.quads.size());
+  centroids.reserve(raw.quads.size());
+  int non_convex = 0;
+  for (const auto& raw_quad : raw.quads) {
+    std::array<int, 4> q;
+    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+    double twice_area = 0;
+    for (int k = 0; k < 4; ++k) {
+      q[k] = new_index[raw_quad[k]];
+      centroid += 0.25 * raw.nodes[raw_quad[k]];
+      twice_area += Cross(raw.nodes[raw_quad[k]], raw.nodes[raw_quad[(k + 1) % 4]]);
+    }
+    const double sense = twice_area < 0 ? -1.0 : 1.0;
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d& corner = raw.nodes[raw_quad[k]];
+      const double turn = sense * Cross(raw.nodes[raw_quad[(k + 1) % 4]] - corner,
+                                        raw.nodes[raw_quad[(k + 3) % 4]] - corner);
+      if (!(turn > 0)) {
+        ++non_convex;
+        break;
+      }
+    }
+    if (twice_area < 0) std::swap(q[1], q[3]);  // now counter-clockwise from +z
+    std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
+    quads.push_back(q);
+    centroids.push_back(centroid);
+  }
+  if (non_convex > 0) {
+    throw MeshError(std::string(function) + ": Gmsh made " + std::to_string(non_convex) +
+                    " quads that are degenerate or not convex" + note() + gmsh_says);
+  }
+  const std::vector<int> element_order = RowOrder(centroids, tol);
+  mesh.quads.resize(static_cast<Eigen::Index>(element_order.size()), 4);
+  for (std::size_t e = 0; e < element_order.size(); ++e) {
+    const auto& q = quads[element_order[e]];
+    mesh.quads.row(e) << q[0], q[1], q[2], q[3];
+  }
+  return mesh;
+}
+
+}  // namespace
+
+Mesh MeshDisk(double radius, const Eigen::Vector2d& center, double element_size, double elevation) {
+  constexpr const char* kFunction = "MeshDisk";
+  RequirePositiveFinite(kFunction, "radius", radius);
+  RequireFinite(kFunction, "center.x", center.x());
+  RequireFinite(kFunction, "center.y", center.y());
+  RequirePositiveFinite(kFunction, "element_size", element_size);
+  RequireFinite(kFunction, "elevation", elevation);
+  RequireFeasibleCount(kFunction, kPi * radius * radius, element_size);
+
+  const Note note = [] { return std::string(); };
+  const RawMesh raw = RunGmsh(kFunction, note, [&] {
+    const double cx = center.x(), cy = center.y(), h = element_size;
+    const int c = gmsh::model::geo::addPoint(cx, cy, 0, h);
+    // Four quarter arcs: the geo kernel's arcs must be shorter than π.
+    const int p[4] = {gmsh::model::geo::addPoint(cx + radius, cy, 0, h),
+                      gmsh::model::geo::addPoint(cx, cy + radius, 0, h),
+                      gmsh::model::geo::addPoint(cx - radius, cy, 0, h),
+                      gmsh::model::geo::addPoint(cx, cy - radius, 0, h)};
+    std::vector<int> arcs;
+    for (int k = 0; k < 4; ++k)
+      arcs.push_back(gmsh::model::geo::addCircleArc(p[k], c, p[(k + 1) % 4]));
+    return arcs;
+  });
+  return Canonical(kFunction, raw, elevation, note);
+}
+
+Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
+                 double element_size,
+                 double elevation) {
+  constexpr const char* kFunction = "MeshPolygon";
+  ValidateOutline(outline);
+  RequirePositiveFinite(kFunction, "element_size", element_size);
+  RequireFinite(kFunction, "elevation", elevation);
+  RequireFeasibleCount(kFunction, std::abs(ShoelaceArea(outline)), element_size);
+
+  const Note note = [&] { return NarrowestGapNote(outline, element_size); };
+  const RawMesh raw = RunGmsh(kFunction, note, [&] {
+    std::vector<int> points;
+    for (const auto& v : outline)
+      points.push_back(gmsh::model::geo::addPoint(v.x(), v.y(), 0, element_size));
+    std::vector<int> lines;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % points.size()]));
+    return lines;
+  });
+  return Canonical(kFunction, raw, elevation, note);
+}
+
+}  // namespace drape

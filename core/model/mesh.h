@@ -1,0 +1,54 @@
+// Quadrilateral meshes of the flat fabric part in its reference state.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <stdexcept>
+#include <vector>
+
+namespace drape {
+
+// Bilinear-quad mesh. Node numbering and element numbering are deterministic
+// (rows of increasing y, then increasing x), and every quad is numbered
+// counter-clockwise seen from +z, so its normal points along +z.
+struct Mesh {
+  Eigen::Matrix<double, Eigen::Dynamic, 3> positions;  // #nodes × 3, reference positions [m]
+  Eigen::Matrix<int, Eigen::Dynamic, 4> quads;         // #elements × 4 node indices
+
+  int NodeCount() const { return static_cast<int>(positions.rows()); }
+  int ElementCount() const { return static_cast<int>(quads.rows()); }
+};
+
+class MeshError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Structured nx × ny mesh of the rectangle size_x × size_y centred at `center`,
+// lying in the plane z = elevation. Throws MeshError for non-positive sizes or counts.
+Mesh MeshRectangle(
+    double size_x, double size_y, const Eigen::Vector2d& center, int nx, int ny, double elevation);
+
+// All-quad unstructured meshes made by Gmsh (quad recombination), with target
+// element edge `element_size`, lying in the plane z = elevation. Throws MeshError.
+Mesh MeshDisk(double radius, const Eigen::Vector2d& center, double element_size, double elevation);
+// `outline` is a simple polygon, either orientation, not closed (last != first).
+Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
+                 double element_size,
+                 double elevation);
+
+// Sum of the quads' areas projected on the xy plane [m²] (signed: a quad
+// numbered clockwise counts negative).
+double ProjectedArea(const Mesh& mesh);
+
+// Shape measures over all quads, for tests and for the `validate` summary,
+// taken on the quads' projection on the xy plane.
+struct MeshQuality {
+  double min_angle_deg = 0;     // smallest interior angle of any quad
+  double max_angle_deg = 0;     // largest interior angle of any quad
+  double max_aspect_ratio = 0;  // longest / shortest edge of any quad
+  double min_signed_area = 0;   // smallest quad area (negative: inverted quad)
+};
+MeshQuality MeasureQuality(const Mesh& mesh);
+
+}  // namespace drape

@@ -1,0 +1,183 @@
+#include "core/model/node_selection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "core/model/outline_geometry.h"
+#include "core/model/overloaded.h"
+#include "core/model/scene_error.h"
+
+namespace drape {
+namespace {
+
+Vec2 XY(const Mesh& mesh, int i) {
+  return {mesh.positions(i, 0), mesh.positions(i, 1)};
+}
+
+int NearestNode(const Mesh& mesh, const Vec2& p) {
+  int best = 0;
+  double best_d2 = INFINITY;
+  for (int i = 0; i < mesh.NodeCount(); ++i) {
+    Vec2 q = XY(mesh, i);
+    double d2 = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]);
+    if (d2 < best_d2) {  // strict: ties go to the lowest index
+      best = i;
+      best_d2 = d2;
+    }
+  }
+  return best;
+}
+
+double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  double dx = b[0] - a[0], dy = b[1] - a[1];
+  double t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy);
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
+}
+
+std::string Length(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x << " m";
+  return s.str();
+}
+
+std::string Point(const Vec2& p) {
+  std::ostringstream s;
+  s << "(" << p[0] << ", " << p[1] << ") m";
+  return s.str();
+}
+
+template <typename Keep>
+std::vector<int> NodesWhere(const Mesh& mesh, Keep keep) {
+  std::vector<int> nodes;
+  for (int i = 0; i < mesh.NodeCount(); ++i)
+    if (keep(XY(mesh, i))) nodes.push_back(i);
+  return nodes;
+}
+
+}  // namespace
+
+double DefaultSelectionTolerance(const Outline& outline) {
+  return 1e-6 * OutlineSize(outline);
+}
+
+std::vector<int> BoundaryNodes(const Mesh& mesh) {
+  std::map<std::pair<int, int>, int> edge_uses;
+  for (int e = 0; e < mesh.ElementCount(); ++e)
+    for (int k = 0; k < 4; ++k) {
+      int a = mesh.quads(e, k), b = mesh.quads(e, (k + 1) % 4);
+      ++edge_uses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<int> nodes;
+  for (const auto& [edge, uses] : edge_uses)
+    if (uses == 1) {
+      nodes.push_back(edge.first);
+      nodes.push_back(edge.second);
+    }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+std::vector<int> SelectNodes(const Selection& selection, const Mesh& mesh, const Outline& outline) {
+  const double tol = selection.tolerance.value_or(DefaultSelectionTolerance(outline));
+  std::vector<int> nodes = std::visit(
+      Overloaded{
+          [&](const PointSelection& p) {
+            if (double d = DistanceToOutline(outline, p.at); d > tol)
+              throw SelectionError("point " + Point(p.at) + " lies " + Length(d) +
+                                   " outside the fabric");
+            return std::vector<int>{NearestNode(mesh, p.at)};
+          },
+          [&](const LineSelection& l) {
+            return NodesWhere(
+                mesh, [&](const Vec2& q) { return DistanceToSegment(q, l.from, l.to) <= tol; });
+          },
+          [&](const BoxSelection& b) {
+            return NodesWhere(mesh, [&](const Vec2& q) {
+              return q[0] >= b.min[0] - tol && q[0] <= b.max[0] + tol && q[1] >= b.min[1] - tol &&
+                     q[1] <= b.max[1] + tol;
+            });
+          },
+          [&](const CornersSelection&) {
+            auto corners = OutlineCorners(outline);
+            if (corners.empty()) throw SelectionError("a disk has no corners");
+            std::vector<int> out;
+            for (const auto& c : corners) out.push_back(NearestNode(mesh, c));
+            return out;
+          },
+          [&](const EdgeSelection& e) {
+            if (e.side == Side::kBoundary) return BoundaryNodes(mesh);
+            Bounds2 b = OutlineBounds(outline);
+            return NodesWhere(mesh, [&](const Vec2& q) {
+              switch (e.side) {
+                case Side::kLeft:
+                  return q[0] <= b.min[0] + tol;
+                case Side::kRight:
+                  return q[0] >= b.max[0] - tol;
+                case Side::kBottom:
+                  return q[1] <= b.min[1] + tol;
+                default:
+                  return q[1] >= b.max[1] - tol;
+              }
+            });
+          },
+          [&](const NodesSelection& n) {
+            for (int i : n.nodes)
+              if (i >= mesh.NodeCount())
+                throw SelectionError("node " + std::to_string(i) +
+                                     " does not exist; the mesh has " +
+                                     std::to_string(mesh.NodeCount()) + " nodes (0 to " +
+                                     std::to_string(mesh.NodeCount() - 1) + ")");
+            return n.nodes;
+          },
+      },
+      selection.shape);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+std::vector<ResolvedSelection> ResolveSelections(const Scene& scene, const Mesh& mesh) {
+  std::vector<ResolvedSelection> resolved;
+  auto resolve = [&](const std::string& path, const std::string& name, const Selection& s) {
+    std::vector<int> nodes;
+    try {
+      nodes = SelectNodes(s, mesh, scene.fabric.outline);
+    } catch (const SelectionError& e) {
+      throw SceneError(path, e.what());
+    }
+    if (nodes.empty()) {
+      double tol = s.tolerance.value_or(DefaultSelectionTolerance(scene.fabric.outline));
+      throw SceneError(path,
+                       "'" + name + "' matched no node (tolerance " + Length(tol) +
+                           "); check its coordinates or give a larger 'tolerance'");
+    }
+    resolved.push_back({path, name, std::move(nodes)});
+  };
+  for (size_t i = 0; i < scene.supports.size(); ++i)
+    resolve("supports[" + std::to_string(i) + "].select",
+            scene.supports[i].name,
+            scene.supports[i].select);
+  for (size_t i = 0; i < scene.grippers.size(); ++i)
+    resolve("grippers[" + std::to_string(i) + "].select",
+            scene.grippers[i].name,
+            scene.grippers[i].select);
+  for (size_t i = 0; i < scene.loads.size(); ++i)
+    resolve("loads[" + std::to_string(i) + "].select", scene.loads[i].name, scene.loads[i].select);
+
+  double tol = DefaultSelectionTolerance(scene.fabric.outline);
+  for (size_t i = 0; i < scene.probes.size(); ++i) {
+    const Probe& p = scene.probes[i];
+    if (double d = DistanceToOutline(scene.fabric.outline, p.at); d > tol)
+      throw SceneError("probes[" + std::to_string(i) + "].at",
+                       "probe '" + p.name + "' at " + Point(p.at) + " lies " + Length(d) +
+                           " outside the fabric");
+  }
+  return resolved;
+}
+
+}  // namespace drape

@@ -1,0 +1,30 @@
+// Plane geometry of a part's outline in reference (flat) coordinates.
+#pragma once
+
+#include <vector>
+
+#include "core/model/scene.h"
+
+namespace drape {
+
+struct Bounds2 {
+  Vec2 min{0, 0};
+  Vec2 max{0, 0};
+};
+
+Bounds2 OutlineBounds(const Outline& outline);
+
+// Diagonal of the bounding box [m]: the part's characteristic size.
+double OutlineSize(const Outline& outline);
+
+// Area enclosed by the outline [m²].
+double OutlineArea(const Outline& outline);
+
+// Distance from p to the part (0 inside or on the boundary) [m].
+double DistanceToOutline(const Outline& outline, const Vec2& p);
+
+// The outline's corners: a rectangle's four (counter-clockwise from the
+// lower left) or a polygon's vertices; a disk has none.
+std::vector<Vec2> OutlineCorners(const Outline& outline);
+
+}  // namespace drape

@@ -1,0 +1,303 @@
+// The scene: plain data read from a scene file, every quantity in SI units.
+//
+// This is what users, scripts and the GUI share (docs/format.md is the full
+// reference). It holds no mesh and no solver state: `BuildModel`-style steps
+// turn it into those. Angles stored under `*_deg` keys stay in degrees.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/model/imperfection.h"
+
+namespace drape {
+
+using Vec2 = std::array<double, 2>;
+using Vec3 = std::array<double, 3>;
+
+// ---- fabric -----------------------------------------------------------------
+
+struct RectangleOutline {
+  Vec2 size{0, 0};    // [m]
+  Vec2 center{0, 0};  // [m]
+  friend bool operator==(const RectangleOutline&, const RectangleOutline&) = default;
+};
+struct DiskOutline {
+  double radius = 0;  // [m]
+  Vec2 center{0, 0};  // [m]
+  friend bool operator==(const DiskOutline&, const DiskOutline&) = default;
+};
+struct PolygonOutline {
+  std::vector<Vec2> vertices;  // [m], not closed
+  friend bool operator==(const PolygonOutline&, const PolygonOutline&) = default;
+};
+using Outline = std::variant<RectangleOutline, DiskOutline, PolygonOutline>;
+
+struct MeshSpec {
+  std::optional<std::array<int, 2>> elements;  // [nx, ny], rectangles
+  std::optional<double> size;                  // target element edge [m], other outlines
+  friend bool operator==(const MeshSpec&, const MeshSpec&) = default;
+};
+
+struct ImperfectionSpec {
+  double amplitude = 0;  // [m]
+  std::uint64_t seed = 0;
+  ImperfectionPattern pattern = ImperfectionPattern::kSmooth;
+  std::optional<double> wavelength;  // [m]; default: a quarter of the part's longer side
+  friend bool operator==(const ImperfectionSpec&, const ImperfectionSpec&) = default;
+};
+
+struct Fabric {
+  Outline outline;
+  MeshSpec mesh;
+  double elevation = 0;  // [m], z of the flat reference plane
+  std::optional<ImperfectionSpec> imperfection;
+  friend bool operator==(const Fabric&, const Fabric&) = default;
+};
+
+// ---- material -----------------------------------------------------------------
+
+// M per unit width against curvature K. Each law is given in SI: K [1/m], M [N·m/m].
+struct LinearBending {
+  std::optional<double> rigidity;  // B [N·m²/m]; default: E h³ / 12(1 − ν²)
+  friend bool operator==(const LinearBending&, const LinearBending&) = default;
+};
+struct PolynomialBending {
+  std::vector<double> coefficients;  // c₁…cₙ of M = Σ cₖ Kᵏ, SI
+  double valid_to = 0;               // |K| [1/m] up to which the fit holds
+  friend bool operator==(const PolynomialBending&, const PolynomialBending&) = default;
+};
+struct CurveBending {
+  std::vector<Vec2> points;  // [K, M] pairs, SI; empty when `file` is given
+  std::string file;          // a Kawabata CSV/TSV, relative to the scene file
+  friend bool operator==(const CurveBending&, const CurveBending&) = default;
+};
+using BendingLaw = std::variant<LinearBending, PolynomialBending, CurveBending>;
+
+struct Bending {
+  BendingLaw warp;                 // the law when isotropic
+  std::optional<BendingLaw> weft;  // set only for direction-dependent bending
+  friend bool operator==(const Bending&, const Bending&) = default;
+};
+
+struct IsotropicMembrane {
+  double youngs_modulus = 0;  // [Pa]
+  double poisson_ratio = 0;
+  friend bool operator==(const IsotropicMembrane&, const IsotropicMembrane&) = default;
+};
+struct OrthotropicMembrane {
+  double e1 = 0, e2 = 0;  // [Pa], 1 = warp
+  double nu12 = 0;
+  double g12 = 0;  // [Pa]
+  friend bool operator==(const OrthotropicMembrane&, const OrthotropicMembrane&) = default;
+};
+using Membrane = std::variant<IsotropicMembrane, OrthotropicMembrane>;
+
+struct Material {
+  double thickness = 0;     // h [m]
+  double areal_weight = 0;  // w [N/m²]
+  Membrane membrane;
+  Bending bending;
+  double angle_deg = 0;  // warp direction from the part's x axis [deg]
+  friend bool operator==(const Material&, const Material&) = default;
+};
+
+// ---- selections, supports, grippers, loads ----------------------------------
+
+enum class Side { kLeft, kRight, kBottom, kTop, kBoundary };
+
+struct PointSelection {
+  Vec2 at{0, 0};
+  friend bool operator==(const PointSelection&, const PointSelection&) = default;
+};
+struct LineSelection {
+  Vec2 from{0, 0}, to{0, 0};
+  friend bool operator==(const LineSelection&, const LineSelection&) = default;
+};
+struct BoxSelection {
+  Vec2 min{0, 0}, max{0, 0};
+  friend bool operator==(const BoxSelection&, const BoxSelection&) = default;
+};
+struct CornersSelection {
+  friend bool operator==(const CornersSelection&, const CornersSelection&) = default;
+};
+struct EdgeSelection {
+  Side side = Side::kLeft;
+  friend bool operator==(const EdgeSelection&, const EdgeSelection&) = default;
+};
+struct NodesSelection {
+  std::vector<int> nodes;
+  friend bool operator==(const NodesSelection&, const NodesSelection&) = default;
+};
+using SelectionShape = std::variant<PointSelection,
+                                    LineSelection,
+                                    BoxSelection,
+                                    CornersSelection,
+                                    EdgeSelection,
+                                    NodesSelection>;
+
+struct Selection {
+  SelectionShape shape;
+  std::optional<double> tolerance;  // [m]; default: a millionth of the part's size
+  friend bool operator==(const Selection&, const Selection&) = default;
+};
+
+enum class Fixity { kPosition, kClamp };
+
+struct Support {
+  std::string name;
+  Selection select;
+  Fixity fix = Fixity::kPosition;
+  friend bool operator==(const Support&, const Support&) = default;
+};
+
+struct Gripper {
+  std::string name;
+  Selection select;
+  Fixity hold = Fixity::kPosition;
+  friend bool operator==(const Gripper&, const Gripper&) = default;
+};
+
+struct PointLoad {
+  std::string name;
+  Selection select;
+  Vec3 force{0, 0, 0};   // total [N], shared over the selected nodes
+  Vec3 moment{0, 0, 0};  // total [N·m]
+  friend bool operator==(const PointLoad&, const PointLoad&) = default;
+};
+
+// ---- obstacles --------------------------------------------------------------
+
+struct PlaneShape {
+  Vec3 point{0, 0, 0};
+  Vec3 normal{0, 0, 1};  // unit
+  friend bool operator==(const PlaneShape&, const PlaneShape&) = default;
+};
+struct BoxShape {
+  Vec3 min{0, 0, 0}, max{0, 0, 0};
+  double edge_radius = 0;
+  friend bool operator==(const BoxShape&, const BoxShape&) = default;
+};
+struct CylinderShape {
+  Vec3 point{0, 0, 0};
+  Vec3 axis{1, 0, 0};  // unit
+  double radius = 0;
+  std::optional<double> length;  // centred on `point`; infinite when absent
+  friend bool operator==(const CylinderShape&, const CylinderShape&) = default;
+};
+struct SphereShape {
+  Vec3 center{0, 0, 0};
+  double radius = 0;
+  friend bool operator==(const SphereShape&, const SphereShape&) = default;
+};
+struct MeshShape {
+  std::string file;  // OBJ or STL, relative to the scene file
+  friend bool operator==(const MeshShape&, const MeshShape&) = default;
+};
+using ObstacleShape = std::variant<PlaneShape, BoxShape, CylinderShape, SphereShape, MeshShape>;
+
+struct Obstacle {
+  std::string name;
+  ObstacleShape shape;
+  friend bool operator==(const Obstacle&, const Obstacle&) = default;
+};
+
+struct Contact {
+  std::optional<double> penalty;  // [N/m³] per unit area; absent = "auto"
+  double friction = 0;            // Coulomb μ
+  friend bool operator==(const Contact&, const Contact&) = default;
+};
+
+// ---- stages -----------------------------------------------------------------
+
+struct LinePath {
+  Vec3 by{0, 0, 0};  // [m]
+  friend bool operator==(const LinePath&, const LinePath&) = default;
+};
+struct ArcPath {
+  Vec3 center{0, 0, 0};
+  Vec3 axis{0, 0, 1};  // unit; right-handed rotation
+  double angle_deg = 0;
+  friend bool operator==(const ArcPath&, const ArcPath&) = default;
+};
+enum class Interpolation { kLinear, kSmooth };
+struct KeyframesPath {
+  std::vector<Vec3> points;  // offsets from the stage's start, reached at λ = k/n
+  Interpolation interpolation = Interpolation::kLinear;
+  friend bool operator==(const KeyframesPath&, const KeyframesPath&) = default;
+};
+using Path = std::variant<LinePath, ArcPath, KeyframesPath>;
+
+struct Move {
+  std::string gripper;
+  Path path;
+  friend bool operator==(const Move&, const Move&) = default;
+};
+
+enum class StageKind { kGravity, kLoad, kMove, kHold };
+enum class StepControl { kArcLength, kLoad };
+
+struct Stage {
+  std::string name;
+  StageKind kind = StageKind::kGravity;
+  double initial_increment = 0.01;  // Δλ₀
+  StepControl control = StepControl::kArcLength;
+  std::vector<std::string> release;  // grippers freed from this stage on
+  std::vector<Move> moves;
+  friend bool operator==(const Stage&, const Stage&) = default;
+};
+
+// ---- solver, probes -----------------------------------------------------------
+
+struct SolverSettings {
+  double tolerance = 1e-5;               // ‖R‖/‖R₀‖
+  double displacement_tolerance = 1e-8;  // ‖Δu‖/‖u‖
+  int target_iterations = 7;             // N_p
+  bool acceleration = true;              // γₙ = N_p / N_{n−1}
+  int max_steps = 5000;
+  int max_iterations = 30;
+  int max_step_cuts = 10;
+  std::optional<double> psi;  // [m]; default: a characteristic length of the part
+  friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
+};
+
+struct Probe {
+  std::string name;
+  Vec2 at{0, 0};  // reference coordinates [m]
+  friend bool operator==(const Probe&, const Probe&) = default;
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  Fabric fabric;
+  Material material;
+  std::vector<Support> supports;
+  std::vector<Gripper> grippers;
+  std::vector<PointLoad> loads;
+  std::vector<Obstacle> obstacles;
+  std::optional<Contact> contact;
+  Vec3 gravity_direction{0, 0, -1};  // unit
+  std::vector<Stage> stages;
+  SolverSettings solver;
+  std::vector<Probe> probes;
+  friend bool operator==(const Scene&, const Scene&) = default;
+};
+
+inline constexpr int kSceneFormatVersion = 1;
+
+// Names used in files, reports and messages.
+const char* ToString(StageKind kind);
+const char* ToString(StepControl control);
+const char* ToString(Fixity fixity);
+const char* ToString(Side side);
+const char* ToString(Interpolation interpolation);
+const char* ToString(ImperfectionPattern pattern);
+
+}  // namespace drape

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Set-up shared by ./run.sh and ./test.sh: installs what is missing (Debian
+# bookworm, apt), configures and builds into build/. Idempotent.
+#
+# Every package the project needs is in DRAPE_PACKAGES, here and nowhere else.
+set -euo pipefail
+
+DRAPE_PACKAGES=(
+  # build
+  g++ cmake ninja-build ccache pkg-config
+  # engine
+  libeigen3-dev libsuitesparse-dev libopenblas-pthread-dev libgmsh-dev
+  nlohmann-json3-dev libcli11-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # headless display for render and GUI tests
+  xvfb xauth
+)
+
+drape_missing_packages() {
+  local missing=()
+  for p in "${DRAPE_PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  echo "${missing[@]:-}"
+}
+
+drape_install_packages() {
+  local missing
+  missing=$(drape_missing_packages)
+  if [ -z "$missing" ]; then
+    echo "setup: all ${#DRAPE_PACKAGES[@]} packages present"
+    return
+  fi
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null; then
+      sudo="sudo"
+    else
+      echo "setup: missing packages ($missing) and not root, no sudo: install them and retry" >&2
+      exit 1
+    fi
+  fi
+  echo "setup: installing $missing"
+  $sudo apt-get update -qq
+  # shellcheck disable=SC2086
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing
+}
+
+drape_build() {
+  local root
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  local jobs
+  jobs=$(nproc 2>/dev/null || echo 2)
+  if [ ! -f "$root/build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$root/build" --parallel "$jobs"
+}
+
+drape_setup() {
+  drape_install_packages
+  drape_build
+}

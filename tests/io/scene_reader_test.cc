@@ -1,0 +1,199 @@
+#include "core/io/scene_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/io/scene_writer.h"
+#include "core/model/scene_error.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kGf = 9.80665e-3;                 // N, gram-force
+constexpr double kOzf = 0.028349523125 * 9.80665;  // N, ounce-force (avoirdupois)
+constexpr double kInch = 0.0254;                   // m
+
+json Minimal() {
+  return json::parse(R"({
+    "drape_scene": 1,
+    "fabric": {"outline": {"rectangle": {"size": ["20 cm", "2 cm"]}}, "mesh": {"elements": [8, 1]}},
+    "material": {"thickness": "0.5 mm", "areal_weight": 2.0, "youngs_modulus": "1 MPa",
+                 "poisson_ratio": 0.3},
+    "supports": [{"name": "root", "select": {"edge": "left"}, "fix": "clamp"}],
+    "stages": [{"name": "SW", "kind": "gravity"}]
+  })");
+}
+
+// The message of the SceneError that parsing `doc` throws.
+std::string ErrorOf(const json& doc) {
+  try {
+    SceneFromJson(doc);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SceneReader, ReadsEveryExampleScene) {
+  for (const auto& file : test::ExampleScenes()) {
+    SCOPED_TRACE(file.string());
+    Scene scene = ReadScene(file);
+    EXPECT_FALSE(scene.name.empty());
+    EXPECT_NE(scene.description.find("Eischen"), std::string::npos) << "cites the paper";
+    EXPECT_FALSE(scene.stages.empty());
+  }
+}
+
+TEST(SceneReader, SaveThenLoadGivesAnEqualScene) {
+  for (const auto& file : test::ExampleScenes()) {
+    SCOPED_TRACE(file.string());
+    Scene scene = ReadScene(file);
+    Scene again = ParseScene(WriteSceneText(scene), test::ScenesDir());
+    EXPECT_TRUE(scene == again);
+    // And the resolved text is a fixed point.
+    EXPECT_EQ(WriteSceneText(again), WriteSceneText(scene));
+  }
+}
+
+TEST(SceneReader, ResolvesPaperUnitsToSI) {
+  Scene rod = ReadScene(test::ScenesDir() / "rod-drape-nonlinear.json");
+  // 0.02665 gf/cm² = 0.02665 × 9.80665e-3 N / 1e-4 m² = 2.61347 N/m² (issue 3's example).
+  EXPECT_NEAR(rod.material.areal_weight, 2.6134722, 1e-6);
+  EXPECT_DOUBLE_EQ(rod.material.thickness, 0.0489e-2);
+  const auto& poly = std::get<PolynomialBending>(rod.material.bending.warp);
+  ASSERT_EQ(poly.coefficients.size(), 5u);
+  // The SI law must give the same moment as the paper's law in its units:
+  // K = 1.7 1/cm → M = Σ cₖ 1.7ᵏ gf·cm/cm.
+  const double paper[] = {1.33387, -2.23070, 2.36510, -1.08471, 0.17876};
+  double k_cm = 1.7, m_paper = 0, m_si = 0;
+  for (int i = 0; i < 5; ++i) {
+    m_paper += paper[i] * std::pow(k_cm, i + 1);
+    m_si += poly.coefficients[i] * std::pow(k_cm * 100.0, i + 1);
+  }
+  EXPECT_NEAR(m_si, m_paper * kGf, 1e-12);  // gf·cm/cm = gf = 9.80665e-3 N
+  EXPECT_DOUBLE_EQ(poly.valid_to, 250.0);
+
+  Scene strip = ReadScene(test::ScenesDir() / "strip-fold.json");
+  const auto& e = std::get<IsotropicMembrane>(strip.material.membrane);
+  EXPECT_NEAR(e.youngs_modulus, 4196 * kOzf / (kInch * kInch), 1e-6);
+  EXPECT_NEAR(strip.material.areal_weight, 4.019e-3 * kOzf / (kInch * kInch), 1e-12);
+  EXPECT_EQ(strip.fabric.mesh.elements, (std::array<int, 2>{80, 1}));
+  ASSERT_EQ(strip.stages.size(), 3u);
+  EXPECT_DOUBLE_EQ(strip.stages[0].initial_increment, 2.70782672e-6);
+  const auto& arc = std::get<ArcPath>(strip.stages[1].moves[0].path);
+  EXPECT_DOUBLE_EQ(arc.angle_deg, 180.0);
+  EXPECT_EQ(strip.solver.target_iterations, 10);
+}
+
+TEST(SceneReader, DefaultsAreDocumented) {
+  Scene s = SceneFromJson(Minimal());
+  EXPECT_EQ(s.gravity_direction, (Vec3{0, 0, -1}));
+  EXPECT_DOUBLE_EQ(s.solver.tolerance, 1e-5);
+  EXPECT_EQ(s.solver.target_iterations, 7);
+  EXPECT_TRUE(s.solver.acceleration);
+  EXPECT_EQ(s.stages[0].control, StepControl::kArcLength);
+  EXPECT_TRUE(std::holds_alternative<LinearBending>(s.material.bending.warp));
+  EXPECT_FALSE(std::get<LinearBending>(s.material.bending.warp).rigidity.has_value());
+  EXPECT_EQ(std::get<RectangleOutline>(s.fabric.outline).center, (Vec2{0, 0}));
+}
+
+TEST(SceneReader, AcceptsArealDensityAsMassTimesStandardGravity) {
+  json doc = Minimal();
+  doc["material"].erase("areal_weight");
+  doc["material"]["areal_density"] = "150 g/m^2";
+  EXPECT_NEAR(SceneFromJson(doc).material.areal_weight, 0.150 * 9.80665, 1e-12);
+}
+
+TEST(SceneReader, NormalisesDirectionsButKeepsUnitOnesExactly) {
+  json doc = Minimal();
+  doc["gravity"] = {{"direction", {3, 0, -4}}};
+  EXPECT_EQ(SceneFromJson(doc).gravity_direction, (Vec3{0.6, 0, -0.8}));
+  double s = std::sqrt(0.5);
+  doc["gravity"] = {{"direction", {s, 0, -s}}};
+  EXPECT_EQ(SceneFromJson(doc).gravity_direction, (Vec3{s, 0, -s}));
+}
+
+TEST(SceneReader, AngleInRadiansUnderDegKeyIsConverted) {
+  json doc = Minimal();
+  doc["material"]["angle_deg"] = "0.5 rad";
+  EXPECT_NEAR(SceneFromJson(doc).material.angle_deg, 0.5 * 180 / M_PI, 1e-12);
+  doc["material"]["angle_deg"] = 45;
+  EXPECT_DOUBLE_EQ(SceneFromJson(doc).material.angle_deg, 45);
+}
+
+TEST(SceneReader, UnknownKeySuggestsTheNearestValidKey) {
+  json doc = Minimal();
+  doc["fabric"]["mesh"] = {{"element", {8, 1}}};
+  EXPECT_EQ(ErrorOf(doc), "fabric.mesh.element: unknown key; did you mean 'elements'?");
+  doc = Minimal();
+  doc["material"]["thicknes"] = 1;
+  EXPECT_EQ(ErrorOf(doc), "material.thicknes: unknown key; did you mean 'thickness'?");
+}
+
+TEST(SceneReader, UnitOfTheWrongDimensionNamesKeyAndDimension) {
+  json doc = Minimal();
+  doc["material"]["youngs_modulus"] = "3 cm";
+  std::string message = ErrorOf(doc);
+  EXPECT_EQ(message.rfind("material.youngs_modulus: ", 0), 0u) << message;
+  EXPECT_NE(message.find("force/area"), std::string::npos) << message;
+}
+
+TEST(SceneReader, DuplicateJsonKeyIsAnErrorNotSilentlyOverwritten) {
+  std::string text = R"({"drape_scene": 1, "fabric": {"outline": {}, "outline": {}}})";
+  try {
+    ParseScene(text);
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.where(), "fabric.outline");
+    EXPECT_NE(std::string(e.what()).find("twice"), std::string::npos);
+  }
+}
+
+TEST(SceneReader, NotJsonGivesLineAndColumn) {
+  std::string text = "{\n  \"drape_scene\": 1,\n  \"name\": oops\n}\n";
+  try {
+    ParseScene(text);
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.where().rfind("line 3, column ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not valid JSON"), std::string::npos);
+  }
+}
+
+TEST(SceneReader, MissingFileIsAClearError) {
+  try {
+    ReadScene("/nonexistent/scene.json");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json"), std::string::npos);
+  }
+}
+
+TEST(SceneReader, FileReferencesMustExist) {
+  json doc = Minimal();
+  doc["material"]["bending"] = {{"model", "curve"}, {"file", "no-such-kawabata.csv"}};
+  std::string message = ErrorOf(doc);
+  EXPECT_EQ(message.rfind("material.bending.file: cannot read 'no-such-kawabata.csv'", 0), 0u)
+      << message;
+}
+
+TEST(SceneReader, ReleasedGripperCannotMoveLater) {
+  json doc = Minimal();
+  doc["grippers"] = json::array({{{"name", "g"}, {"select", {{"edge", "right"}}}}});
+  doc["stages"] = json::parse(R"([
+    {"name": "up", "kind": "move", "moves": [{"gripper": "g", "path": {"line": {"by": [0, 0, 0.01]}}}]},
+    {"name": "drop", "kind": "hold", "release": ["g"]},
+    {"name": "again", "kind": "move", "moves": [{"gripper": "g", "path": {"line": {"by": [0, 0, 0.01]}}}]}
+  ])");
+  EXPECT_EQ(ErrorOf(doc), "stages[2].moves[0].gripper: gripper 'g' was released in stage 'drop'");
+}
+
+}  // namespace
+}  // namespace drape
