@@ -15,5 +15,7 @@ using CommandRunner = std::function<int()>;
 
 // Adds `validate SCENE [--resolved]`; sets `runner` to run it when chosen.
 void AddValidateCommand(CLI::App& app, CommandRunner& runner);
+// Adds `run SCENE -o DIR [--quiet] [--verbose] [--threads N]`.
+void AddRunCommand(CLI::App& app, CommandRunner& runner);
 
 }  // namespace drape::app

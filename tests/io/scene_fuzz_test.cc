@@ -63,7 +63,7 @@ TEST(SceneFuzz, RandomByteEditsNeverCrash) {
           default:
             text.erase(at, 1 + rng.Next() % 8);
         }
-        if (text.empty()) text = "{";
+        if (text.empty()) text.push_back('{');
       }
       (Parses(text) ? parsed : rejected)++;
     }

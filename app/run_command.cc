@@ -1,0 +1,152 @@
+// `drape run SCENE -o DIR [--quiet] [--verbose]`: solve a scene and write
+// DIR/result.json and DIR/states.bin. Exit codes: 0 converged, 1 invalid
+// input, 2 solver failure (partial result written), 130 cancelled.
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "app/commands.h"
+#include "core/io/result_writer.h"
+#include "core/io/scene_reader.h"
+#include "core/model/scene_error.h"
+#include "core/solve/shell_solver.h"
+
+namespace drape::app {
+namespace {
+
+struct RunArgs {
+  std::string scene;
+  std::string output;
+  bool quiet = false;
+  bool verbose = false;
+  int threads = 0;
+};
+
+CancellationToken* g_cancel = nullptr;
+
+extern "C" void OnInterrupt(int) {
+  if (g_cancel) g_cancel->Cancel();
+}
+
+// One line, rewritten in place, on a terminal only.
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  ~ProgressLine() { Clear(); }
+
+  void Show(const StepState& s, int stability_changes) {
+    if (!enabled_) return;
+    char line[200];
+    std::snprintf(line,
+                  sizeof line,
+                  "\r  stage %-8s step %5d  lambda %.6f  iterations %2d  pivots- %d%s  %7.1f s ",
+                  s.stage_name.c_str(),
+                  s.step,
+                  s.lambda,
+                  s.iterations,
+                  s.negative_pivots,
+                  stability_changes ? " (stability changed)" : "",
+                  s.elapsed_s);
+    std::fputs(line, stderr);
+    shown_ = true;
+  }
+  void Clear() {
+    if (enabled_ && shown_) std::fputs("\r\033[K", stderr);
+    shown_ = false;
+  }
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+};
+
+int ExitCode(Termination t) {
+  switch (t) {
+    case Termination::kCompleted:
+      return 0;
+    case Termination::kCancelled:
+    case Termination::kStoppedByObserver:
+      return 130;
+    case Termination::kInvalidInput:
+      return 1;
+    default:
+      return 2;
+  }
+}
+
+int RunRun(const RunArgs& args) {
+  Scene scene;
+  std::unique_ptr<ShellSolver> solver;
+  try {
+    scene = ReadScene(args.scene);
+    SolverOptions options = SolverOptions::FromScene(scene.solver);
+    options.threads = args.threads;
+    solver = std::make_unique<ShellSolver>(scene, options);
+  } catch (const SceneError& e) {
+    std::cerr << "drape run: " << args.scene << ": " << e.what() << "\n";
+    return 1;
+  }
+  std::unique_ptr<ResultWriter> writer;
+  try {
+    writer = std::make_unique<ResultWriter>(args.output, scene, solver->model());
+  } catch (const std::exception& e) {
+    std::cerr << "drape run: " << e.what() << "\n";
+    return 1;
+  }
+
+  CancellationToken cancel;
+  g_cancel = &cancel;
+  std::signal(SIGINT, OnInterrupt);
+  std::signal(SIGTERM, OnInterrupt);
+  ProgressLine progress(!args.quiet && isatty(STDERR_FILENO));
+  int last_pivots = 0;
+  StepObserver record = [&](const StepState& s) {
+    writer->AddStep(s);
+    progress.Show(s, s.step > 1 && s.negative_pivots != last_pivots);
+    last_pivots = s.negative_pivots;
+    return StepDecision::kContinue;
+  };
+  SolveSummary summary = solver->Solve({record}, &cancel);
+  progress.Clear();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  g_cancel = nullptr;
+  try {
+    writer->Finish(summary);
+  } catch (const std::exception& e) {
+    std::cerr << "drape run: " << e.what() << "\n";
+    return 2;
+  }
+  if (!args.quiet) {
+    std::cerr << (args.verbose ? summary.FullReport() : summary.BriefReport() + "\n");
+    for (const auto& e : summary.stability_events)
+      std::cerr << "  stability changed at step " << e.step << " (lambda " << e.lambda
+                << "): negative pivots " << e.negative_pivots_before << " -> "
+                << e.negative_pivots_after << "\n";
+    if (!args.verbose)
+      for (const auto& note : summary.notes) std::cerr << "  note: " << note << "\n";
+    std::cerr << "  results: " << (writer->directory() / kResultFileName).string() << "\n";
+  }
+  return ExitCode(summary.termination);
+}
+
+}  // namespace
+
+void AddRunCommand(CLI::App& app, CommandRunner& runner) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* cmd = app.add_subcommand("run", "Solve a scene and write its result folder");
+  cmd->add_option("scene", args->scene, "Scene file (JSON)")->required();
+  cmd->add_option("-o,--output", args->output, "Result folder (created if missing)")->required();
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line and no report");
+  cmd->add_flag("-v,--verbose", args->verbose, "Print the full solve report");
+  cmd->add_option("--threads", args->threads, "Threads for assembly (0: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([args, &runner] { runner = [args] { return RunRun(*args); }; });
+}
+
+}  // namespace drape::app

@@ -1,0 +1,135 @@
+#include "core/io/result_writer.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "core/io/scene_writer.h"
+#include "core/io/state_file.h"
+
+namespace drape {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json Vector(const Eigen::Vector3d& v) {
+  return json::array({v.x(), v.y(), v.z()});
+}
+
+json Named(const std::vector<NamedVector>& values) {
+  json j = json::object();
+  for (const auto& v : values) j[v.name] = Vector(v.value);
+  return j;
+}
+
+}  // namespace
+
+std::string ResultStatus(Termination termination) {
+  switch (termination) {
+    case Termination::kCompleted:
+      return "converged";
+    case Termination::kCancelled:
+    case Termination::kStoppedByObserver:
+      return "cancelled";
+    default:
+      return "failed";
+  }
+}
+
+struct ResultWriter::Impl {
+  json scene_resolved;
+  std::string scene_name;
+  int nodes = 0, elements = 0, dofs = 0;
+  std::unique_ptr<StateFileWriter> states;
+  json steps = json::array();
+  StepState last;
+  bool has_last = false;
+};
+
+ResultWriter::ResultWriter(const std::filesystem::path& directory,
+                           const Scene& scene,
+                           const ShellModel& model)
+    : impl_(std::make_unique<Impl>()), directory_(directory) {
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  if (ec) throw std::runtime_error("cannot create '" + directory.string() + "': " + ec.message());
+  impl_->scene_resolved = SceneToJson(scene);
+  impl_->scene_name = scene.name;
+  impl_->nodes = model.NodeCount();
+  impl_->elements = model.mesh.ElementCount();
+  impl_->dofs = model.DofCount();
+  impl_->states = std::make_unique<StateFileWriter>(directory / kStatesFileName, model.mesh);
+}
+
+ResultWriter::~ResultWriter() = default;
+
+void ResultWriter::AddStep(const StepState& step) {
+  impl_->states->Append(
+      {step.stage, step.step, step.lambda, step.state.positions, step.state.Directors()});
+  json s{{"stage", step.stage},
+         {"step", step.step},
+         {"lambda", step.lambda},
+         {"iterations", step.iterations},
+         {"residuals", step.residuals},
+         {"arc_length", step.arc_length},
+         {"negative_pivots", step.negative_pivots},
+         {"reactions", Named(step.reactions)},
+         {"probes", Named(step.probes)}};
+  impl_->steps.push_back(std::move(s));
+  impl_->last = step;
+  impl_->has_last = true;
+}
+
+void ResultWriter::Finish(const SolveSummary& summary) {
+  json r;
+  r["drape_result"] = kResultFormatVersion;
+  r["scene"] = impl_->scene_name;
+  r["status"] = ResultStatus(summary.termination);
+  r["message"] = summary.message;
+  r["mesh"] = {{"nodes", impl_->nodes}, {"elements", impl_->elements}, {"dofs", impl_->dofs}};
+  r["stages"] = json::array();
+  for (const auto& st : summary.stages)
+    r["stages"].push_back({{"name", st.name},
+                           {"steps", st.steps},
+                           {"iterations", st.iterations},
+                           {"step_cuts", st.step_cuts},
+                           {"control", ToString(st.control_used)},
+                           {"final_lambda", st.final_lambda}});
+  r["stability_events"] = json::array();
+  for (const auto& e : summary.stability_events)
+    r["stability_events"].push_back({{"stage", e.stage},
+                                     {"step", e.step},
+                                     {"lambda", e.lambda},
+                                     {"negative_pivots_before", e.negative_pivots_before},
+                                     {"negative_pivots_after", e.negative_pivots_after}});
+  r["notes"] = summary.notes;
+  r["steps"] = impl_->steps;
+  json final_state = json::object();
+  if (impl_->has_last) {
+    json positions = json::array();
+    const auto& x = impl_->last.state.positions;
+    for (int i = 0; i < x.rows(); ++i) positions.push_back({x(i, 0), x(i, 1), x(i, 2)});
+    final_state["step"] = impl_->last.step;
+    final_state["positions"] = std::move(positions);
+    final_state["probes"] = Named(impl_->last.probes);
+  }
+  r["final"] = std::move(final_state);
+  r["timing"] = {{"total_s", summary.total_s},
+                 {"assembly_s", summary.assembly_s},
+                 {"factorization_s", summary.factorization_s},
+                 {"solve_s", summary.solve_s}};
+  r["states_file"] = kStatesFileName;
+  r["scene_resolved"] = impl_->scene_resolved;
+
+  const auto path = directory_ / kResultFileName;
+  const auto temporary = directory_ / (std::string(kResultFileName) + ".part");
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << FormatJson(r);
+    if (!out) throw std::runtime_error("cannot write '" + temporary.string() + "'");
+  }
+  // Rename so a reader never sees half a file.
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace drape

@@ -1,0 +1,48 @@
+// Writing a run: `result.json` (docs/format.md, "Result") and the binary state
+// file `states.bin` beside it. The state file is appended and flushed after
+// every converged step, so a run that is cut off keeps every state reached;
+// result.json is written when the run ends, however it ends.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/model/scene.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/solve_summary.h"
+#include "core/solve/step_state.h"
+
+namespace drape {
+
+inline constexpr int kResultFormatVersion = 1;
+inline constexpr char kStatesFileName[] = "states.bin";
+inline constexpr char kResultFileName[] = "result.json";
+
+class ResultWriter {
+ public:
+  // Creates `directory` (and parents) and starts states.bin with the mesh.
+  // Throws std::runtime_error naming the path when it cannot.
+  ResultWriter(const std::filesystem::path& directory, const Scene& scene, const ShellModel& model);
+  ~ResultWriter();
+
+  // Records one converged step (the observer the CLI installs).
+  void AddStep(const StepState& step);
+
+  // Writes result.json with the status of `summary`.
+  void Finish(const SolveSummary& summary);
+
+  const std::filesystem::path& directory() const { return directory_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::filesystem::path directory_;
+};
+
+// Status word of a run's result ("converged", "failed", "cancelled").
+std::string ResultStatus(Termination termination);
+
+}  // namespace drape

@@ -1,0 +1,25 @@
+#include "core/mechanics/shell_section.h"
+
+namespace drape {
+
+ShellSection IsotropicSection(double youngs_modulus,
+                              double poisson_ratio,
+                              double thickness,
+                              double bending_rigidity) {
+  const double nu = poisson_ratio;
+  // Plane-stress C / E.
+  Eigen::Matrix3d c;
+  c << 1, nu, 0, nu, 1, 0, 0, 0, (1 - nu) / 2;
+  c /= (1 - nu * nu);
+  const double h = thickness;
+  const double strip_rigidity =
+      bending_rigidity > 0 ? bending_rigidity : youngs_modulus * h * h * h / 12.0;
+  const double shear_modulus = youngs_modulus / (2 * (1 + nu));
+  ShellSection s;
+  s.membrane = youngs_modulus * h * c;
+  s.bending = strip_rigidity * c;
+  s.shear = (5.0 / 6.0) * shear_modulus * h * Eigen::Matrix2d::Identity();
+  return s;
+}
+
+}  // namespace drape

@@ -1,0 +1,52 @@
+// The discrete equilibrium equations R(q) = F_int(q) − F_ext = 0 over the free
+// DOFs, with the tangent K = ∂R/∂q factorised for Newton and continuation
+// steps. Owns the assembly buffers and the factorisation (analysed once).
+#pragma once
+
+#include <Eigen/SparseCore>
+
+#include "core/solve/dof_map.h"
+#include "core/solve/shell_assembler.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/sparse_cholesky.h"
+
+namespace drape {
+
+struct SystemTimers {
+  double assembly_s = 0;
+  double factorization_s = 0;
+  double solve_s = 0;
+  int factorizations = 0;
+  int ldlt_factorizations = 0;
+};
+
+class EquilibriumSystem {
+ public:
+  EquilibriumSystem(const ShellModel& model, const DofMap& dofs);
+
+  // Assembles the internal force (and the tangent) at `state`; returns the energy.
+  double Assemble(const ShellState& state, bool with_tangent);
+  // The full internal force of the last assembly (5 per node).
+  const Eigen::VectorXd& InternalForce() const { return internal_; }
+  // R = F_int − F_ext over the free DOFs, from the last assembly.
+  Eigen::VectorXd Residual(const Eigen::VectorXd& external) const;
+
+  // Factorises the last assembled tangent.
+  FactorizationInfo Factorize();
+  // K⁻¹ b with the last factorisation (free DOFs).
+  Eigen::VectorXd Solve(const Eigen::VectorXd& b);
+
+  const DofMap& dofs() const { return dofs_; }
+  const SystemTimers& timers() const { return timers_; }
+  int ColorCount() const { return assembler_.ColorCount(); }
+
+ private:
+  const DofMap& dofs_;
+  ShellAssembler assembler_;
+  Eigen::SparseMatrix<double> tangent_;
+  Eigen::VectorXd internal_;
+  SparseCholesky cholesky_;
+  SystemTimers timers_;
+};
+
+}  // namespace drape

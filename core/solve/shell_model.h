@@ -1,0 +1,71 @@
+// Everything about a scene that stays fixed during a run: the mesh and its
+// reference geometry, the section law, the loads at λ = 1, which nodes the
+// supports, grippers and loads hold, and where the probes are.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "core/mechanics/shell_element.h"
+#include "core/mechanics/shell_section.h"
+#include "core/model/mesh.h"
+#include "core/model/scene.h"
+#include "core/solve/shell_state.h"
+
+namespace drape {
+
+struct HeldNodes {
+  std::string name;
+  std::vector<int> nodes;
+  Fixity fixity = Fixity::kPosition;
+};
+
+struct NodalLoad {
+  std::string name;
+  std::vector<int> nodes;
+  Eigen::Vector3d force_per_node = Eigen::Vector3d::Zero();   // [N]
+  Eigen::Vector3d moment_per_node = Eigen::Vector3d::Zero();  // [N·m]
+};
+
+// A material point given in reference coordinates: element and (ξ, η).
+struct ProbePoint {
+  std::string name;
+  int element = 0;
+  double xi = 0, eta = 0;
+};
+
+struct ShellModel {
+  Mesh mesh;
+  ShellSection section;
+  std::vector<ShellElementReference> elements;
+  ShellState reference;         // stress-free state
+  Eigen::VectorXd weight_load;  // nodal self-weight at λ = 1, 5 per node [N]
+  Eigen::Vector3d total_weight = Eigen::Vector3d::Zero();  // Σ weight [N]
+  std::vector<HeldNodes> supports;
+  std::vector<HeldNodes> grippers;
+  std::vector<NodalLoad> loads;
+  std::vector<ProbePoint> probes;
+  double characteristic_length = 0;  // diagonal of the part [m]
+
+  int NodeCount() const { return mesh.NodeCount(); }
+  int DofCount() const { return kDofsPerNode * mesh.NodeCount(); }
+};
+
+// Builds the model of a scene. Throws SceneError naming the key of any
+// feature the engine does not support yet (it never silently ignores one).
+ShellModel BuildShellModel(const Scene& scene);
+// The same on a given reference mesh instead of meshing the scene's outline
+// (patch tests, imported meshes). Selections still use the outline.
+ShellModel BuildShellModel(const Scene& scene, Mesh mesh);
+
+// Position of a probe in a state: Σ N_I(ξ, η) φ_I over its element.
+Eigen::Vector3d ProbePosition(const ShellModel& model,
+                              const ProbePoint& probe,
+                              const ShellState& state);
+
+// The section law of a material (isotropic, linear bending).
+ShellSection SectionOf(const Material& material);
+
+}  // namespace drape

@@ -1,0 +1,99 @@
+#include "core/solve/solve_summary.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace drape {
+
+const char* ToString(Termination t) {
+  switch (t) {
+    case Termination::kNotRun:
+      return "not run";
+    case Termination::kCompleted:
+      return "converged";
+    case Termination::kStepTooSmall:
+      return "step too small";
+    case Termination::kMaxStepsReached:
+      return "maximum steps reached";
+    case Termination::kCancelled:
+      return "cancelled";
+    case Termination::kStoppedByObserver:
+      return "stopped by observer";
+    case Termination::kInvalidInput:
+      return "invalid input";
+  }
+  return "?";
+}
+
+std::string SolveSummary::BriefReport() const {
+  char line[256];
+  std::snprintf(line,
+                sizeof line,
+                "%s: %d steps, %d iterations, %d cut-backs, %.3f s",
+                ToString(termination),
+                steps,
+                iterations,
+                step_cuts,
+                total_s);
+  std::string out = line;
+  if (!IsComplete()) out += " — " + message;
+  return out;
+}
+
+std::string SolveSummary::FullReport() const {
+  std::ostringstream s;
+  char row[256];
+  s << "Drape solve report\n";
+  std::snprintf(row,
+                sizeof row,
+                "  nodes %d, elements %d, DOFs %d (free %d), threads %d\n",
+                nodes,
+                elements,
+                dofs,
+                free_dofs,
+                threads_used);
+  s << row;
+  s << "  stage            kind     control     steps  iters  cuts   final λ   time [s]\n";
+  for (const auto& st : stages) {
+    std::snprintf(row,
+                  sizeof row,
+                  "  %-16s %-8s %-11s %5d %6d %5d %9.6f %10.3f\n",
+                  st.name.c_str(),
+                  ToString(st.kind),
+                  ToString(st.control_used),
+                  st.steps,
+                  st.iterations,
+                  st.step_cuts,
+                  st.final_lambda,
+                  st.time_s);
+    s << row;
+  }
+  for (const auto& e : stability_events) {
+    std::snprintf(row,
+                  sizeof row,
+                  "  stability: negative pivots %d -> %d at stage %d step %d, lambda %.6g\n",
+                  e.negative_pivots_before,
+                  e.negative_pivots_after,
+                  e.stage,
+                  e.step,
+                  e.lambda);
+    s << row;
+  }
+  std::snprintf(row,
+                sizeof row,
+                "  time: total %.3f s, assembly %.3f s, factorisation %.3f s (%d, %d LDLt), "
+                "solve %.3f s, observers %.3f s\n",
+                total_s,
+                assembly_s,
+                factorization_s,
+                factorizations,
+                ldlt_factorizations,
+                solve_s,
+                observer_s);
+  s << row;
+  for (const auto& note : notes) s << "  note: " << note << "\n";
+  s << "  termination: " << ToString(termination) << " — " << message << "\n";
+  return s.str();
+}
+
+}  // namespace drape

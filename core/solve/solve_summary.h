@@ -1,0 +1,73 @@
+// What happened in a run (Ceres' Solver::Summary): why it stopped, what each
+// stage did, where the time went. Fields start at sentinels so an unfilled
+// one is obvious.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/model/scene.h"
+
+namespace drape {
+
+enum class Termination {
+  kNotRun,             // Solve was not called
+  kCompleted,          // every stage reached λ = 1
+  kStepTooSmall,       // a step was cut back max_step_cuts times and still failed
+  kMaxStepsReached,    // the run needed more than max_steps steps
+  kCancelled,          // the cancellation token was set
+  kStoppedByObserver,  // an observer returned kStop
+  kInvalidInput,       // options or scene rejected before any work
+};
+
+const char* ToString(Termination termination);
+
+// A change in the number of negative pivots between two converged steps: the
+// path crossed a limit or bifurcation point.
+struct StabilityEvent {
+  int stage = -1;
+  int step = 0;
+  double lambda = 0;
+  int negative_pivots_before = 0;
+  int negative_pivots_after = 0;
+};
+
+struct StageSummary {
+  std::string name;
+  StageKind kind = StageKind::kGravity;
+  StepControl control_given = StepControl::kArcLength;
+  StepControl control_used = StepControl::kLoad;
+  int steps = 0;
+  int iterations = 0;
+  int step_cuts = 0;
+  double final_lambda = 0;
+  double time_s = 0;
+};
+
+struct SolveSummary {
+  Termination termination = Termination::kNotRun;
+  std::string message = "Solve was not called";
+
+  int nodes = -1, elements = -1, dofs = -1, free_dofs = -1;
+  int threads_used = -1;
+  int steps = 0;
+  int iterations = 0;
+  int step_cuts = 0;
+  int factorizations = 0;
+  int ldlt_factorizations = 0;  // factorisations that needed the indefinite path
+  std::vector<StageSummary> stages;
+  std::vector<StabilityEvent> stability_events;
+  std::vector<std::string> notes;  // what was used instead of what was asked, and why
+
+  double total_s = 0;
+  double assembly_s = 0;
+  double factorization_s = 0;
+  double solve_s = 0;
+  double observer_s = 0;
+
+  bool IsComplete() const { return termination == Termination::kCompleted; }
+  std::string BriefReport() const;  // one line
+  std::string FullReport() const;   // a table: sizes, stages, times, termination
+};
+
+}  // namespace drape

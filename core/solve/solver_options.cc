@@ -1,0 +1,72 @@
+#include "core/solve/solver_options.h"
+
+#include <sstream>
+
+namespace drape {
+namespace {
+
+template <typename T>
+bool Check(bool ok, const char* name, T value, const char* constraint, std::string* error) {
+  if (!ok && error) {
+    std::ostringstream s;
+    s << "SolverOptions::" << name << " = " << value << ". Violated constraint: " << constraint;
+    *error = s.str();
+  }
+  return ok;
+}
+
+}  // namespace
+
+SolverOptions SolverOptions::FromScene(const SolverSettings& settings) {
+  SolverOptions o;
+  o.tolerance = settings.tolerance;
+  o.displacement_tolerance = settings.displacement_tolerance;
+  o.target_iterations = settings.target_iterations;
+  o.acceleration = settings.acceleration;
+  o.max_steps = settings.max_steps;
+  o.max_iterations = settings.max_iterations;
+  o.max_step_cuts = settings.max_step_cuts;
+  return o;
+}
+
+bool SolverOptions::IsValid(std::string* error) const {
+  return Check(
+             tolerance > 0 && tolerance < 1, "tolerance", tolerance, "0 < tolerance < 1", error) &&
+         Check(displacement_tolerance > 0,
+               "displacement_tolerance",
+               displacement_tolerance,
+               "displacement_tolerance > 0",
+               error) &&
+         Check(target_iterations >= 1,
+               "target_iterations",
+               target_iterations,
+               "target_iterations >= 1",
+               error) &&
+         Check(min_step_growth > 0 && min_step_growth <= 1,
+               "min_step_growth",
+               min_step_growth,
+               "0 < min_step_growth <= 1",
+               error) &&
+         Check(max_step_growth >= 1,
+               "max_step_growth",
+               max_step_growth,
+               "max_step_growth >= 1",
+               error) &&
+         Check(max_increment > 0 && max_increment <= 1,
+               "max_increment",
+               max_increment,
+               "0 < max_increment <= 1",
+               error) &&
+         Check(max_steps >= 1, "max_steps", max_steps, "max_steps >= 1", error) &&
+         Check(
+             max_iterations >= 1, "max_iterations", max_iterations, "max_iterations >= 1", error) &&
+         Check(max_step_cuts >= 0, "max_step_cuts", max_step_cuts, "max_step_cuts >= 0", error) &&
+         Check(divergence_ratio > 1,
+               "divergence_ratio",
+               divergence_ratio,
+               "divergence_ratio > 1",
+               error) &&
+         Check(threads >= 0, "threads", threads, "threads >= 0", error);
+}
+
+}  // namespace drape

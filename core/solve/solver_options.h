@@ -1,0 +1,44 @@
+// What the solver is asked to do (Ceres' Solver::Options): every field has its
+// default where it is declared, and IsValid names the field that is wrong.
+#pragma once
+
+#include <string>
+
+#include "core/model/scene.h"
+
+namespace drape {
+
+struct SolverOptions {
+  // Equilibrium: ‖R‖/‖R₀‖ at most this, R₀ the residual at the start of the step.
+  double tolerance = 1e-5;
+  // Or: the last Newton correction at most this fraction of the part's size
+  // (round-off stagnation; the residual cannot fall further).
+  double displacement_tolerance = 1e-8;
+  // N_p, the iterations a step should take; γ = N_p / N_{n−1} scales the next step.
+  int target_iterations = 7;
+  // Scale steps by γ (the paper's acceleration); off keeps Δλ₀ (cut-backs aside).
+  bool acceleration = true;
+  // Bounds on γ per step: no step grows or shrinks faster than this.
+  double min_step_growth = 0.25;
+  double max_step_growth = 4.0;
+  // Largest load-factor step of a stage.
+  double max_increment = 0.25;
+  // Steps over the whole run; a run that needs more stops with kMaxStepsReached.
+  int max_steps = 5000;
+  // Newton iterations per step before the step is cut back.
+  int max_iterations = 30;
+  // Successive cut-backs (halving) of one step before the stage fails.
+  int max_step_cuts = 10;
+  // ‖R‖/‖R₀‖ above this in any iteration counts as divergence (cut back).
+  double divergence_ratio = 1e6;
+  // Threads for element assembly; 0 uses OpenMP's default.
+  int threads = 0;
+
+  // Copies the scene's `solver` settings over the defaults.
+  static SolverOptions FromScene(const SolverSettings& settings);
+
+  // False, with `error` naming the field, its value and the broken constraint.
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace drape

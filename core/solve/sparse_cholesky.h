@@ -1,0 +1,51 @@
+// Sparse symmetric factorisation of the tangent with CHOLMOD.
+//
+// Analyze once per model (the pattern does not change), Factorize per Newton
+// iteration, Solve per right-hand side. Supernodal LLᵀ (fast, BLAS) is tried
+// first and doubles as the positive-definiteness test; when it fails, a
+// simplicial LDLᵀ gives the inertia: the number of negative pivots, the
+// stability indicator of the path following (a change means a limit or
+// bifurcation point was crossed).
+#pragma once
+
+#include <Eigen/SparseCore>
+
+#include <memory>
+
+namespace drape {
+
+struct FactorizationInfo {
+  bool positive_definite = false;
+  int negative_pivots = -1;  // 0 when positive definite
+  int zero_pivots = 0;       // pivots below the dbound in magnitude (singular)
+  bool used_ldlt = false;
+};
+
+class SparseCholesky {
+ public:
+  SparseCholesky();
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  // `upper`: the upper triangle (column-major, compressed, sorted indices) of
+  // the symmetric matrix. Only its pattern is used. Throws std::runtime_error
+  // when CHOLMOD fails (out of memory).
+  void Analyze(const Eigen::SparseMatrix<double>& upper);
+
+  // Numeric factorisation of a matrix with the analysed pattern.
+  FactorizationInfo Factorize(const Eigen::SparseMatrix<double>& upper);
+
+  // x = K⁻¹ b with the last factorisation. After an LDLᵀ (no pivoting, so not
+  // backward stable) the solution is refined iteratively against `upper`.
+  Eigen::VectorXd Solve(const Eigen::VectorXd& b) const;
+
+  const FactorizationInfo& info() const { return info_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  FactorizationInfo info_;
+};
+
+}  // namespace drape
