@@ -79,7 +79,24 @@ int ExitCode(Termination t) {
   }
 }
 
+// Ctrl-C and SIGTERM set the token for the whole command, so an interrupt
+// while the model is built or the result is written still ends cleanly.
+struct InterruptGuard {
+  explicit InterruptGuard(CancellationToken& token) {
+    g_cancel = &token;
+    std::signal(SIGINT, OnInterrupt);
+    std::signal(SIGTERM, OnInterrupt);
+  }
+  ~InterruptGuard() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    g_cancel = nullptr;
+  }
+};
+
 int RunRun(const RunArgs& args) {
+  CancellationToken cancel;
+  InterruptGuard guard(cancel);
   Scene scene;
   std::unique_ptr<ShellSolver> solver;
   try {
@@ -99,10 +116,6 @@ int RunRun(const RunArgs& args) {
     return 1;
   }
 
-  CancellationToken cancel;
-  g_cancel = &cancel;
-  std::signal(SIGINT, OnInterrupt);
-  std::signal(SIGTERM, OnInterrupt);
   ProgressLine progress(!args.quiet && isatty(STDERR_FILENO));
   int last_pivots = 0;
   StepObserver record = [&](const StepState& s) {
@@ -113,9 +126,6 @@ int RunRun(const RunArgs& args) {
   };
   SolveSummary summary = solver->Solve({record}, &cancel);
   progress.Clear();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  g_cancel = nullptr;
   try {
     writer->Finish(summary);
   } catch (const std::exception& e) {

@@ -41,6 +41,7 @@ struct ResultWriter::Impl {
   std::string scene_name;
   int nodes = 0, elements = 0, dofs = 0;
   std::unique_ptr<StateFileWriter> states;
+  std::ofstream csv;
   json steps = json::array();
   StepState last;
   bool has_last = false;
@@ -53,12 +54,23 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
   std::error_code ec;
   std::filesystem::create_directories(directory, ec);
   if (ec) throw std::runtime_error("cannot create '" + directory.string() + "': " + ec.message());
+  // A result folder reused from an earlier run must not describe two runs at
+  // once: the old result goes before the new one starts.
+  std::filesystem::remove(directory / kResultFileName, ec);
   impl_->scene_resolved = SceneToJson(scene);
   impl_->scene_name = scene.name;
   impl_->nodes = model.NodeCount();
   impl_->elements = model.mesh.ElementCount();
   impl_->dofs = model.DofCount();
   impl_->states = std::make_unique<StateFileWriter>(directory / kStatesFileName, model.mesh);
+  impl_->csv.open(directory / kStepsCsvFileName);
+  if (!impl_->csv)
+    throw std::runtime_error("cannot create '" + (directory / kStepsCsvFileName).string() + "'");
+  impl_->csv << "stage,stage_name,step,lambda,iterations,arc_length,negative_pivots";
+  for (const auto& probe : model.probes)
+    for (const char* axis : {"x", "y", "z"}) impl_->csv << "," << probe.name << "_" << axis << "_m";
+  impl_->csv << "\n";
+  impl_->csv.flush();
 }
 
 ResultWriter::~ResultWriter() = default;
@@ -76,6 +88,18 @@ void ResultWriter::AddStep(const StepState& step) {
          {"reactions", Named(step.reactions)},
          {"probes", Named(step.probes)}};
   impl_->steps.push_back(std::move(s));
+  auto& csv = impl_->csv;
+  csv.precision(17);
+  // Stage names are user text: quote them for CSV.
+  std::string name = step.stage_name;
+  for (size_t at = 0; (at = name.find('"', at)) != std::string::npos; at += 2)
+    name.insert(at, 1, '"');
+  csv << step.stage << ",\"" << name << "\"," << step.step << "," << step.lambda << ","
+      << step.iterations << "," << step.arc_length << "," << step.negative_pivots;
+  for (const auto& p : step.probes)
+    csv << "," << p.value.x() << "," << p.value.y() << "," << p.value.z();
+  csv << "\n";
+  csv.flush();
   impl_->last = step;
   impl_->has_last = true;
 }

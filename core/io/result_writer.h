@@ -1,6 +1,7 @@
-// Writing a run: `result.json` (docs/format.md, "Result") and the binary state
-// file `states.bin` beside it. The state file is appended and flushed after
-// every converged step, so a run that is cut off keeps every state reached;
+// Writing a run: `result.json` (docs/format.md, "Result"), the binary state
+// file `states.bin` and `steps.csv` (one row per step, for spreadsheets) beside
+// it. The state file and the CSV are appended and flushed after every
+// converged step, so a run that is cut off keeps every state reached;
 // result.json is written when the run ends, however it ends.
 #pragma once
 
@@ -20,6 +21,7 @@ namespace drape {
 inline constexpr int kResultFormatVersion = 1;
 inline constexpr char kStatesFileName[] = "states.bin";
 inline constexpr char kResultFileName[] = "result.json";
+inline constexpr char kStepsCsvFileName[] = "steps.csv";
 
 class ResultWriter {
  public:

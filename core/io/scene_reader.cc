@@ -717,6 +717,13 @@ Scene ParseScene(std::string_view text, const fs::path& base_directory) {
     if (auto colon = detail.find(": "); colon != std::string::npos)
       detail = detail.substr(colon + 2);
     throw SceneError(LineColumn(text, e.byte), "not valid JSON: " + detail);
+  } catch (const json::exception& e) {
+    // Found by fuzzing: a number too large for a double ("1e906") is an
+    // out_of_range error, with no position.
+    std::string detail = e.what();
+    if (auto bracket = detail.find("] "); bracket != std::string::npos)
+      detail = detail.substr(bracket + 2);
+    throw SceneError("", "not valid JSON: " + detail);
   }
   return SceneFromJson(document, base_directory);
 }

@@ -27,12 +27,6 @@ Eigen::Matrix3d ExpRotation(const Eigen::Vector3d& w) {
   return Eigen::Matrix3d::Identity() + a * s + b * s * s;
 }
 
-Eigen::Vector3d LogRotation(const Eigen::Matrix3d& r) {
-  // Eigen's angle-axis conversion stays accurate near 0 and near π.
-  const Eigen::AngleAxisd aa(r);
-  return aa.angle() * aa.axis();
-}
-
 Eigen::Matrix3d RotationFromDirector(const Eigen::Vector3d& t) {
   const Eigen::Vector3d e3 = Eigen::Vector3d::UnitZ();
   const double c = e3.dot(t);

@@ -16,9 +16,6 @@ Eigen::Matrix3d Skew(const Eigen::Vector3d& w);
 // exp(ŵ) by Rodrigues' formula, accurate for small and large |w|.
 Eigen::Matrix3d ExpRotation(const Eigen::Vector3d& w);
 
-// The rotation vector w with exp(ŵ) = r, |w| ≤ π (the inverse of ExpRotation).
-Eigen::Vector3d LogRotation(const Eigen::Matrix3d& r);
-
 // The rotation taking E₃ to t about the axis E₃ × t, the paper's
 // Λ = (E·t) I + (E×t)^ + (E×t)⊗(E×t) / (1 + E·t). Requires |t| = 1, t ≠ −E₃.
 Eigen::Matrix3d RotationFromDirector(const Eigen::Vector3d& t);

@@ -29,6 +29,8 @@ class DofMap {
   Eigen::VectorXd Restrict(const Eigen::VectorXd& full) const;
   Eigen::VectorXd Expand(const Eigen::VectorXd& free) const;
 
+  friend bool operator==(const DofMap&, const DofMap&) = default;
+
  private:
   void Renumber();
 

@@ -24,12 +24,22 @@ class EquilibriumSystem {
  public:
   EquilibriumSystem(const ShellModel& model, const DofMap& dofs);
 
-  // Assembles the internal force (and the tangent) at `state`; returns the energy.
-  double Assemble(const ShellState& state, bool with_tangent);
+  // Assembles the internal force (and the tangent) at `state`; returns the
+  // energy. With `velocity` (prescribed DOF rates, 5 per node) and the
+  // tangent, also ∂F_int/∂λ = K v (InternalForceRate).
+  double Assemble(const ShellState& state,
+                  bool with_tangent,
+                  const Eigen::VectorXd* velocity = nullptr);
   // The full internal force of the last assembly (5 per node).
   const Eigen::VectorXd& InternalForce() const { return internal_; }
+  const Eigen::VectorXd& InternalForceRate() const { return rate_; }
   // R = F_int − F_ext over the free DOFs, from the last assembly.
   Eigen::VectorXd Residual(const Eigen::VectorXd& external) const;
+
+  // The force level of the last assembly: ‖F_ext‖ over the free DOFs plus
+  // ‖F_int − F_ext‖ over the fixed ones (the reactions) [N]. What a residual
+  // is small against when a step adds no load (grippers move, a hold).
+  double ForceLevel(const Eigen::VectorXd& external) const;
 
   // Factorises the last assembled tangent.
   FactorizationInfo Factorize();
@@ -45,6 +55,7 @@ class EquilibriumSystem {
   ShellAssembler assembler_;
   Eigen::SparseMatrix<double> tangent_;
   Eigen::VectorXd internal_;
+  Eigen::VectorXd rate_;
   SparseCholesky cholesky_;
   SystemTimers timers_;
 };

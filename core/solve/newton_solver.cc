@@ -20,7 +20,8 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
       return out;
     }
     system.Assemble(state, /*with_tangent=*/true);
-    const Eigen::VectorXd r = system.Residual(external(state));
+    const Eigen::VectorXd f_ext = external(state);
+    const Eigen::VectorXd r = system.Residual(f_ext);
     const double norm = r.norm();
     if (!std::isfinite(norm)) {
       out.status = NewtonOutcome::Status::kDiverged;
@@ -30,12 +31,15 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
     // A predictor may start far from or close to equilibrium; the test stays
     // relative to the load the step added, not to where the predictor landed.
     if (it == 0) r0 = settings.residual_reference > 0 ? settings.residual_reference : norm;
-    const double ratio = r0 > 0 ? norm / r0 : 0.0;
+    const double reference = settings.relative_to_force_level ? system.ForceLevel(f_ext) : r0;
+    const double ratio = reference > 0 ? norm / reference : 0.0;
     out.residuals.push_back(ratio);
     if (ratio <= settings.tolerance || norm <= settings.residual_floor ||
         last_correction <= settings.displacement_floor) {
       out.status = NewtonOutcome::Status::kConverged;
-      if (it == 0) out.negative_pivots = system.Factorize().negative_pivots;
+      // The stability indicator belongs to the converged state, whose tangent
+      // was just assembled.
+      out.negative_pivots = system.Factorize().negative_pivots;
       return out;
     }
     if (ratio > settings.divergence_ratio) {
@@ -49,7 +53,7 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
                    " iterations (‖R‖/‖R₀‖ = " + std::to_string(ratio) + ")";
       return out;
     }
-    out.negative_pivots = system.Factorize().negative_pivots;
+    system.Factorize();
     const Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-r));
     ApplyIncrement(correction, state);
     ++out.iterations;

@@ -19,6 +19,11 @@ struct NewtonSettings {
   // free DOFs (the paper's R⁰ when the step starts from the last equilibrium).
   // Zero means "the first residual", for steps that introduce no load.
   double residual_reference = 0;
+  // Measure ‖R‖ against the force level (loads and reactions) instead: for
+  // steps that add no load. Prescribed motion's ‖K_fp ∂u_p/∂λ‖ Δλ is a
+  // membrane-stiffness force, often 1e6 times the reactions it produces, and
+  // would accept steps whose reactions are still wrong.
+  bool relative_to_force_level = false;
   double residual_floor = 0;      // ‖R‖ at or below this is converged [N]: round-off level
   double displacement_floor = 0;  // a correction max|Δu| at or below this is converged [m]
   int max_iterations = 30;
@@ -29,7 +34,7 @@ struct NewtonOutcome {
   enum class Status { kConverged, kDiverged, kIterationLimit, kCancelled };
   Status status = Status::kDiverged;
   int iterations = 0;             // linear solves
-  std::vector<double> residuals;  // ‖R‖/‖R₀‖, one per assembly, starting with 1
+  std::vector<double> residuals;  // ‖R‖/‖R₀‖, one per assembly (R₀: the load the step added)
   int negative_pivots = 0;        // of the last factorised tangent
   std::string reason;             // why it did not converge
 };

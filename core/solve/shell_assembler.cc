@@ -67,9 +67,13 @@ ShellAssembler::ShellAssembler(const ShellModel& model, const DofMap& dofs)
 
 double ShellAssembler::Assemble(const ShellState& state,
                                 Eigen::VectorXd& internal,
-                                Eigen::SparseMatrix<double>* tangent) const {
+                                Eigen::SparseMatrix<double>* tangent,
+                                const Eigen::VectorXd* velocity,
+                                Eigen::VectorXd* rate) const {
   const Mesh& mesh = model_.mesh;
   internal.setZero(model_.DofCount());
+  const bool want_rate = tangent && velocity && rate;
+  if (want_rate) rate->setZero(model_.DofCount());
   double* values = nullptr;
   if (tangent) {
     tangent->coeffs().setZero();
@@ -97,6 +101,18 @@ double ShellAssembler::Assemble(const ShellState& state,
       for (int k = 0; k < 4; ++k)
         internal.segment<kDofsPerNode>(kDofsPerNode * mesh.quads(e, k)) +=
             result.gradient.segment<kDofsPerNode>(kDofsPerNode * k);
+      if (want_rate) {
+        ElementVector v;
+        for (int k = 0; k < 4; ++k)
+          v.segment<kDofsPerNode>(kDofsPerNode * k) =
+              velocity->segment<kDofsPerNode>(kDofsPerNode * mesh.quads(e, k));
+        if (!v.isZero(0.0)) {
+          const ElementVector kv = result.hessian * v;
+          for (int k = 0; k < 4; ++k)
+            rate->segment<kDofsPerNode>(kDofsPerNode * mesh.quads(e, k)) +=
+                kv.segment<kDofsPerNode>(kDofsPerNode * k);
+        }
+      }
       if (!values) continue;
       const int* slot = slots_.data() + static_cast<size_t>(e) * kUpperPairs;
       for (int a = 0; a < 20; ++a)

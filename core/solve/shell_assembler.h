@@ -24,9 +24,16 @@ class ShellAssembler {
   // Energy [J]; `internal` (5 per node, all DOFs) receives ∂E/∂q; when
   // `tangent` is given (it must have Pattern()'s structure) its values are
   // replaced by the upper triangle of ∂²E/∂q² over the free DOFs.
+  //
+  // With `velocity` (5 per node: how fast the prescribed DOFs move with λ,
+  // zero elsewhere) and a tangent, `rate` receives ∂F_int/∂λ = K v over all
+  // DOFs: the paper's ∂P/∂λ for prescribed motion, exact (from the element
+  // Hessians) rather than by differencing.
   double Assemble(const ShellState& state,
                   Eigen::VectorXd& internal,
-                  Eigen::SparseMatrix<double>* tangent) const;
+                  Eigen::SparseMatrix<double>* tangent,
+                  const Eigen::VectorXd* velocity = nullptr,
+                  Eigen::VectorXd* rate = nullptr) const;
 
   // The tangent's structure, values zero.
   const Eigen::SparseMatrix<double>& Pattern() const { return pattern_; }

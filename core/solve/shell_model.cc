@@ -27,15 +27,6 @@ void CheckSupported(const Scene& scene) {
   if (!std::holds_alternative<LinearBending>(scene.material.bending.warp))
     throw SceneError("material.bending.model",
                      "only 'linear' bending is supported by this version yet");
-  for (size_t i = 0; i < scene.stages.size(); ++i) {
-    const Stage& s = scene.stages[i];
-    const std::string path = "stages[" + std::to_string(i) + "]";
-    if (s.kind == StageKind::kMove)
-      throw SceneError(path + ".kind", "'move' stages are not supported by this version yet");
-    if (!s.release.empty())
-      throw SceneError(path + ".release",
-                       "releasing grippers is not supported by this version yet");
-  }
 }
 
 // Nodal directors of the reference surface: the normalised sum of the normals

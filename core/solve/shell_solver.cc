@@ -3,16 +3,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <optional>
+#include <map>
+#include <memory>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
 #include "core/model/scene_error.h"
+#include "core/solve/arc_length_stepper.h"
 #include "core/solve/dof_map.h"
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/newton_solver.h"
+#include "core/solve/stage_loading.h"
 
 namespace drape {
 namespace {
@@ -23,34 +26,82 @@ double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-DofMap MakeDofMap(const ShellModel& model) {
-  DofMap dofs(model.NodeCount());
-  // Grippers hold their nodes where they are until move stages exist.
-  for (const auto* group : {&model.supports, &model.grippers})
-    for (const auto& held : *group)
-      for (int node : held.nodes) dofs.FixNode(node, held.fixity);
-  return dofs;
+std::string Name(const std::string& kind, const std::string& name) {
+  return kind + " '" + name + "'";
+}
+
+// A node can be held by one thing at a time: a support, or a gripper. Two
+// holders of one node are fine while neither moves; a moving gripper must own
+// its nodes alone, or the node would have to be in two places.
+void CheckHoldsDoNotConflict(const Scene& scene, const ShellModel& model) {
+  for (size_t s = 0; s < scene.stages.size(); ++s) {
+    const Stage& stage = scene.stages[s];
+    std::map<int, std::string> holder;  // node → who holds it still in this stage
+    for (const auto& support : model.supports)
+      for (int node : support.nodes) holder.emplace(node, Name("support", support.name));
+    std::map<int, std::string> mover;
+    for (size_t m = 0; m < stage.moves.size(); ++m) {
+      const std::string path = "stages[" + std::to_string(s) + "].moves[" + std::to_string(m) + "]";
+      for (const auto& g : model.grippers) {
+        if (g.name != stage.moves[m].gripper) continue;
+        for (int node : g.nodes) {
+          if (auto it = holder.find(node); it != holder.end())
+            throw SceneError(path,
+                             Name("gripper", g.name) + " would move node " + std::to_string(node) +
+                                 ", which " + it->second +
+                                 " holds in place: it cannot be in two places");
+          if (auto it = mover.find(node); it != mover.end())
+            throw SceneError(path,
+                             Name("gripper", g.name) + " and " + it->second + " both move node " +
+                                 std::to_string(node) + " along different paths");
+          mover.emplace(node, Name("gripper", g.name));
+        }
+      }
+    }
+    for (const auto& g : model.grippers) {
+      const bool moved = std::any_of(stage.moves.begin(), stage.moves.end(), [&](const Move& m) {
+        return m.gripper == g.name;
+      });
+      if (moved) continue;
+      for (int node : g.nodes)
+        if (auto it = mover.find(node); it != mover.end())
+          throw SceneError("stages[" + std::to_string(s) + "]",
+                           it->second + " moves node " + std::to_string(node) + ", which " +
+                               Name("gripper", g.name) +
+                               " holds in place: it cannot be in two places");
+    }
+  }
 }
 
 }  // namespace
 
 struct ShellSolver::Impl {
   Impl(const Scene& s, ShellModel m, const SolverOptions& o)
-      : scene(s), options(o), model(std::move(m)), dofs(MakeDofMap(model)) {}
+      : scene(s), options(o), model(std::move(m)), released(model.grippers.size(), false) {}
 
-  Eigen::VectorXd External(const ShellState& state) const;
-  Eigen::VectorXd PointLoads(const ShellState& state) const;
-  // ‖F_ref‖ of a stage over the free DOFs: what λ multiplies.
-  double StageLoadNorm(StageKind kind, const ShellState& state) const;
+  DofMap StageDofs() const;
+  void UseDofs(DofMap stage_dofs);
+  std::vector<HeldGripper> Holds(const Stage& stage) const;
   NewtonSettings Newton() const;
-  // Runs one stage; returns false when the run must stop (summary says why).
+  double Psi() const { return options.psi > 0 ? options.psi : model.characteristic_length; }
+
+  // Each runs one stage; false when the run must stop (the summary says why).
   bool RunStage(int index);
-  bool RunHoldStage(int index, StageSummary& stage);
+  bool RunHold(int index, const StageLoading& loading, StageSummary& stage);
+  bool RunLoadControl(int index, const StageLoading& loading, StageSummary& stage);
+  bool RunArcLength(int index, const StageLoading& loading, StageSummary& stage);
+  // Shared bookkeeping of a failed step: true to retry smaller, false to stop.
+  bool RetryAfterFailure(const ContinuationStep& step,
+                         const Stage& spec,
+                         double lambda,
+                         int& cuts_in_a_row,
+                         StageSummary& stage);
+
   bool Emit(int stage_index,
             int stage_step,
             double lambda,
-            const NewtonOutcome& newton,
-            double arc_length);
+            const StageLoading& loading,
+            const ContinuationStep& step);
   void Stop(Termination t, std::string message) {
     summary.termination = t;
     summary.message = std::move(message);
@@ -59,12 +110,14 @@ struct ShellSolver::Impl {
   Scene scene;
   SolverOptions options;
   ShellModel model;
-  DofMap dofs;
-  std::optional<EquilibriumSystem> system;
+  std::vector<bool> released;  // per gripper
+  // The DOF map of the current stage, and the system built on it.
+  std::unique_ptr<DofMap> dofs;
+  std::unique_ptr<EquilibriumSystem> system;
+  SystemTimers retired_timers;  // of systems replaced when a release changed the DOFs
   ShellState state;
-  double weight_factor = 0;  // λ of the self-weight
-  double load_factor = 0;    // λ of the point loads
-  double reference_force = 0;
+  double weight_done = 0;  // weight factor reached by earlier stages
+  double loads_done = 0;   // point-load factor reached by earlier stages
   const std::vector<StepObserver>* observers = nullptr;
   const CancellationToken* cancel = nullptr;
   SolveSummary summary;
@@ -72,27 +125,46 @@ struct ShellSolver::Impl {
   int last_negative_pivots = 0;
 };
 
-Eigen::VectorXd ShellSolver::Impl::PointLoads(const ShellState& s) const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.DofCount());
-  for (const auto& load : model.loads)
-    for (int node : load.nodes) {
-      f.segment<3>(kDofsPerNode * node) += load.force_per_node;
-      // A moment M does work M·w on the rotation w = a g₁ + b g₂.
-      const Eigen::Matrix3d& r = s.rotations[node];
-      f(kDofsPerNode * node + 3) += load.moment_per_node.dot(r.col(0));
-      f(kDofsPerNode * node + 4) += load.moment_per_node.dot(r.col(1));
+DofMap ShellSolver::Impl::StageDofs() const {
+  DofMap d(model.NodeCount());
+  for (const auto& s : model.supports)
+    for (int node : s.nodes) d.FixNode(node, s.fixity);
+  for (size_t g = 0; g < model.grippers.size(); ++g)
+    if (!released[g])
+      for (int node : model.grippers[g].nodes) d.FixNode(node, model.grippers[g].fixity);
+  return d;
+}
+
+void ShellSolver::Impl::UseDofs(DofMap stage_dofs) {
+  if (dofs && system && *dofs == stage_dofs) return;
+  if (system) {
+    const SystemTimers& t = system->timers();
+    retired_timers.assembly_s += t.assembly_s;
+    retired_timers.factorization_s += t.factorization_s;
+    retired_timers.solve_s += t.solve_s;
+    retired_timers.factorizations += t.factorizations;
+    retired_timers.ldlt_factorizations += t.ldlt_factorizations;
+  }
+  system.reset();
+  dofs = std::make_unique<DofMap>(std::move(stage_dofs));
+  system = std::make_unique<EquilibriumSystem>(model, *dofs);
+}
+
+std::vector<HeldGripper> ShellSolver::Impl::Holds(const Stage& stage) const {
+  std::vector<HeldGripper> holds;
+  for (size_t g = 0; g < model.grippers.size(); ++g) {
+    if (released[g]) continue;
+    HeldGripper h;
+    h.gripper = &model.grippers[g];
+    for (const auto& m : stage.moves)
+      if (m.gripper == h.gripper->name) h.path = &m.path;
+    for (int node : h.gripper->nodes) {
+      h.start_positions.push_back(state.positions.row(node).transpose());
+      h.start_rotations.push_back(state.rotations[node]);
     }
-  return f;
-}
-
-Eigen::VectorXd ShellSolver::Impl::External(const ShellState& s) const {
-  Eigen::VectorXd f = weight_factor * model.weight_load;
-  if (load_factor != 0) f += load_factor * PointLoads(s);
-  return f;
-}
-
-double ShellSolver::Impl::StageLoadNorm(StageKind kind, const ShellState& s) const {
-  return dofs.Restrict(kind == StageKind::kGravity ? model.weight_load : PointLoads(s)).norm();
+    holds.push_back(std::move(h));
+  }
+  return holds;
 }
 
 NewtonSettings ShellSolver::Impl::Newton() const {
@@ -100,8 +172,8 @@ NewtonSettings ShellSolver::Impl::Newton() const {
   n.tolerance = options.tolerance;
   n.max_iterations = options.max_iterations;
   n.divergence_ratio = options.divergence_ratio;
-  // Below ~1e-11 of the loads the residual is round-off in the membrane forces.
-  n.residual_floor = 1e-11 * reference_force;
+  // Below ~1e-11 of the weight the residual is round-off in the membrane forces.
+  n.residual_floor = 1e-11 * model.total_weight.norm();
   n.displacement_floor = options.displacement_tolerance * model.characteristic_length;
   return n;
 }
@@ -109,35 +181,38 @@ NewtonSettings ShellSolver::Impl::Newton() const {
 bool ShellSolver::Impl::Emit(int stage_index,
                              int stage_step,
                              double lambda,
-                             const NewtonOutcome& newton,
-                             double arc_length) {
+                             const StageLoading& loading,
+                             const ContinuationStep& result) {
   StepState step;
   step.stage = stage_index;
   step.stage_name = scene.stages[stage_index].name;
   step.step = ++summary.steps;
   step.stage_step = stage_step;
   step.lambda = lambda;
-  step.iterations = newton.iterations;
-  step.residuals = newton.residuals;
-  step.arc_length = arc_length;
-  step.negative_pivots = newton.negative_pivots;
-  // What each support and gripper exerts on the fabric: F_int − F_ext at its nodes.
-  const Eigen::VectorXd unbalanced = system->InternalForce() - External(state);
-  for (const auto* group : {&model.supports, &model.grippers})
-    for (const auto& held : *group) {
-      NamedVector r{held.name, Eigen::Vector3d::Zero()};
+  step.iterations = result.iterations;
+  step.residuals = result.residuals;
+  step.arc_length = result.arc_length;
+  step.negative_pivots = result.negative_pivots;
+  // What each support and gripper exerts on the fabric: F_int − F_ext at its
+  // nodes (zero for a released gripper, whose nodes are free).
+  const Eigen::VectorXd unbalanced = system->InternalForce() - loading.External(lambda, state);
+  auto reaction = [&](const HeldNodes& held, bool active) {
+    NamedVector r{held.name, Eigen::Vector3d::Zero()};
+    if (active)
       for (int node : held.nodes) r.value += unbalanced.segment<3>(kDofsPerNode * node);
-      step.reactions.push_back(r);
-    }
+    step.reactions.push_back(r);
+  };
+  for (const auto& s : model.supports) reaction(s, true);
+  for (size_t g = 0; g < model.grippers.size(); ++g) reaction(model.grippers[g], !released[g]);
   for (const auto& probe : model.probes)
     step.probes.push_back({probe.name, ProbePosition(model, probe, state)});
   step.state = state;
   step.elapsed_s = SecondsSince(start);
 
-  if (step.step > 1 && newton.negative_pivots != last_negative_pivots)
+  if (step.step > 1 && result.negative_pivots != last_negative_pivots)
     summary.stability_events.push_back(
-        {stage_index, step.step, lambda, last_negative_pivots, newton.negative_pivots});
-  last_negative_pivots = newton.negative_pivots;
+        {stage_index, step.step, lambda, last_negative_pivots, result.negative_pivots});
+  last_negative_pivots = result.negative_pivots;
 
   const auto observe_start = Clock::now();
   bool stop = false;
@@ -150,9 +225,38 @@ bool ShellSolver::Impl::Emit(int stage_index,
   return !stop;
 }
 
-bool ShellSolver::Impl::RunHoldStage(int index, StageSummary& stage) {
+bool ShellSolver::Impl::RetryAfterFailure(const ContinuationStep& step,
+                                          const Stage& spec,
+                                          double lambda,
+                                          int& cuts_in_a_row,
+                                          StageSummary& stage) {
+  if (step.status == NewtonOutcome::Status::kCancelled) {
+    Stop(Termination::kCancelled,
+         "cancelled in stage '" + spec.name + "' at λ = " + std::to_string(lambda));
+    return false;
+  }
+  if (cuts_in_a_row == options.max_step_cuts) {
+    Stop(Termination::kStepTooSmall,
+         "stage '" + spec.name + "' stopped at λ = " + std::to_string(lambda) + " after " +
+             std::to_string(cuts_in_a_row) + " cut-backs: " + step.reason);
+    return false;
+  }
+  // Cut back and retry: counted only when it happens.
+  ++cuts_in_a_row;
+  ++stage.step_cuts;
+  ++summary.step_cuts;
+  return true;
+}
+
+bool ShellSolver::Impl::RunHold(int index, const StageLoading& loading, StageSummary& stage) {
+  NewtonSettings settings = Newton();
+  settings.relative_to_force_level = true;  // a hold adds no load
   NewtonOutcome newton = SolveEquilibrium(
-      *system, [&](const ShellState& s) { return External(s); }, Newton(), state, cancel);
+      *system,
+      [&](const ShellState& s) { return loading.External(1.0, s); },
+      settings,
+      state,
+      cancel);
   stage.iterations += newton.iterations;
   summary.iterations += newton.iterations;
   if (newton.status == NewtonOutcome::Status::kCancelled) {
@@ -164,42 +268,23 @@ bool ShellSolver::Impl::RunHoldStage(int index, StageSummary& stage) {
          "stage '" + stage.name + "' found no equilibrium: " + newton.reason);
     return false;
   }
+  ContinuationStep step;
+  step.iterations = newton.iterations;
+  step.residuals = newton.residuals;
+  step.negative_pivots = newton.negative_pivots;
   stage.steps = 1;
   stage.final_lambda = 1;
-  return Emit(index, 1, 1.0, newton, 0.0);
+  return Emit(index, 1, 1.0, loading, step);
 }
 
-bool ShellSolver::Impl::RunStage(int index) {
+bool ShellSolver::Impl::RunLoadControl(int index,
+                                       const StageLoading& loading,
+                                       StageSummary& stage) {
   const Stage& spec = scene.stages[index];
-  StageSummary stage;
-  stage.name = spec.name;
-  stage.kind = spec.kind;
-  stage.control_given = spec.control;
-  stage.control_used = StepControl::kLoad;
-  const auto stage_start = Clock::now();
-  struct Finish {
-    SolveSummary& summary;
-    StageSummary& stage;
-    Clock::time_point start;
-    ~Finish() {
-      stage.time_s = SecondsSince(start);
-      summary.stages.push_back(stage);
-    }
-  } finish{summary, stage, stage_start};
-
-  if (spec.kind == StageKind::kHold) return RunHoldStage(index, stage);
-  if (spec.control == StepControl::kArcLength)
-    summary.notes.push_back("stage '" + spec.name +
-                            "': arc-length control is not available yet; load control was used");
-  double& factor = spec.kind == StageKind::kGravity ? weight_factor : load_factor;
-  factor = 0;
+  ArcLengthStepper stepper(*system, loading, Newton(), Psi());
   double lambda = 0;
   double increment = spec.initial_increment;
   int cuts_in_a_row = 0;
-  // The last converged step, for the secant predictor.
-  ShellState previous = state;
-  double previous_increment = 0;
-
   while (lambda < 1.0) {
     if (summary.steps >= options.max_steps) {
       Stop(Termination::kMaxStepsReached,
@@ -211,51 +296,135 @@ bool ShellSolver::Impl::RunStage(int index) {
     // Land exactly on λ = 1 rather than leave a sliver of a step.
     if (1.0 - (lambda + increment) < 1e-12) increment = 1.0 - lambda;
     const ShellState saved = state;
-    factor = lambda + increment;
-    if (previous_increment > 0)
-      state = Extrapolate(previous, saved, increment / previous_increment);
-    NewtonSettings newton_settings = Newton();
-    newton_settings.residual_reference = increment * StageLoadNorm(spec.kind, saved);
-    NewtonOutcome newton = SolveEquilibrium(
-        *system, [&](const ShellState& s) { return External(s); }, newton_settings, state, cancel);
-    stage.iterations += newton.iterations;
-    summary.iterations += newton.iterations;
-    if (newton.status == NewtonOutcome::Status::kCancelled) {
+    ContinuationStep step = stepper.StepTo(state, lambda, lambda + increment, cancel);
+    stage.iterations += step.iterations;
+    summary.iterations += step.iterations;
+    if (step.status != NewtonOutcome::Status::kConverged) {
       state = saved;
-      factor = lambda;
-      Stop(Termination::kCancelled,
-           "cancelled in stage '" + spec.name + "' at λ = " + std::to_string(lambda));
-      return false;
-    }
-    if (newton.status != NewtonOutcome::Status::kConverged) {
-      state = saved;
-      factor = lambda;
-      ++stage.step_cuts;
-      ++summary.step_cuts;
-      if (++cuts_in_a_row > options.max_step_cuts) {
-        Stop(Termination::kStepTooSmall,
-             "stage '" + spec.name + "' stopped at λ = " + std::to_string(lambda) + " after " +
-                 std::to_string(options.max_step_cuts) + " cut-backs: " + newton.reason);
-        return false;
-      }
+      if (!RetryAfterFailure(step, spec, lambda, cuts_in_a_row, stage)) return false;
       increment /= 2;
       continue;
     }
     cuts_in_a_row = 0;
-    previous = saved;
-    previous_increment = increment;
     lambda += increment;
     ++stage.steps;
     stage.final_lambda = lambda;
-    if (!Emit(index, stage.steps, lambda, newton, increment)) return false;
+    step.arc_length = increment;
+    if (!Emit(index, stage.steps, lambda, loading, step)) return false;
     if (options.acceleration) {
       const double gamma =
-          static_cast<double>(options.target_iterations) / std::max(1, newton.iterations);
+          static_cast<double>(options.target_iterations) / std::max(1, step.iterations);
       increment *= std::clamp(gamma, options.min_step_growth, options.max_step_growth);
     }
   }
-  factor = 1.0;
   return true;
+}
+
+bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, StageSummary& stage) {
+  const Stage& spec = scene.stages[index];
+  ArcLengthStepper stepper(*system, loading, Newton(), Psi());
+  double lambda = 0;
+  double arc_length = 0;      // 0: size the first step from Δλ₀
+  double max_arc_length = 0;  // set from the first step: max_increment in its units
+  PathDirection previous;
+  bool has_previous = false;
+  int cuts_in_a_row = 0;
+  while (lambda < 1.0 - 1e-12) {
+    if (summary.steps >= options.max_steps) {
+      Stop(Termination::kMaxStepsReached,
+           "stage '" + spec.name + "' needed more than " + std::to_string(options.max_steps) +
+               " steps");
+      return false;
+    }
+    const ShellState saved = state;
+    ContinuationStep step = stepper.Step(state,
+                                         lambda,
+                                         arc_length,
+                                         spec.initial_increment,
+                                         has_previous ? &previous : nullptr,
+                                         1.0,
+                                         cancel);
+    stage.iterations += step.iterations;
+    summary.iterations += step.iterations;
+    if (max_arc_length == 0)
+      max_arc_length = step.arc_length * options.max_increment / spec.initial_increment;
+    if (step.status != NewtonOutcome::Status::kConverged) {
+      state = saved;
+      if (!RetryAfterFailure(step, spec, lambda, cuts_in_a_row, stage)) return false;
+      arc_length = 0.5 * step.arc_length;
+      continue;
+    }
+    // A snap-back may take λ below 0 for a while (a load that must reverse to
+    // hold the shell on its path); a path that runs back past λ = −1 does
+    // not come back to the stage's end.
+    if (step.lambda < -1.0) {
+      Stop(Termination::kStepTooSmall,
+           "stage '" + spec.name +
+               "': the path runs back past λ = −1 and does not reach the "
+               "stage's end");
+      return false;
+    }
+    cuts_in_a_row = 0;
+    lambda = step.landed ? 1.0 : step.lambda;
+    previous = step.direction;
+    has_previous = true;
+    ++stage.steps;
+    stage.final_lambda = lambda;
+    if (!Emit(index, stage.steps, lambda, loading, step)) return false;
+    arc_length = step.arc_length;
+    if (options.acceleration) {
+      const double gamma =
+          static_cast<double>(options.target_iterations) / std::max(1, step.iterations);
+      arc_length *= std::clamp(gamma, options.min_step_growth, options.max_step_growth);
+    }
+    arc_length = std::min(arc_length, max_arc_length);
+  }
+  return true;
+}
+
+bool ShellSolver::Impl::RunStage(int index) {
+  const Stage& spec = scene.stages[index];
+  StageSummary stage;
+  stage.name = spec.name;
+  stage.kind = spec.kind;
+  stage.control_given = spec.control;
+  stage.control_used = spec.kind == StageKind::kHold ? StepControl::kLoad : spec.control;
+  const auto stage_start = Clock::now();
+  struct Finish {
+    SolveSummary& summary;
+    StageSummary& stage;
+    Clock::time_point start;
+    ~Finish() {
+      stage.time_s = SecondsSince(start);
+      summary.stages.push_back(stage);
+    }
+  } finish{summary, stage, stage_start};
+
+  for (const auto& name : spec.release)
+    for (size_t g = 0; g < model.grippers.size(); ++g)
+      if (model.grippers[g].name == name) released[g] = true;
+  DofMap stage_dofs = StageDofs();
+  if (stage_dofs.FreeCount() == stage_dofs.DofCount()) {
+    Stop(Termination::kIllPosed,
+         "stage '" + spec.name + "': nothing holds the fabric (every support and gripper is " +
+             "released), so it would move as a rigid body; keep a support or a gripper");
+    return false;
+  }
+  UseDofs(std::move(stage_dofs));
+  const StageLoading loading(model, spec, Holds(spec), weight_done, loads_done);
+
+  bool ok;
+  if (spec.kind == StageKind::kHold)
+    ok = RunHold(index, loading, stage);
+  else if (spec.control == StepControl::kLoad)
+    ok = RunLoadControl(index, loading, stage);
+  else
+    ok = RunArcLength(index, loading, stage);
+  if (ok) {
+    weight_done = loading.WeightFactor(1.0);
+    loads_done = loading.LoadFactor(1.0);
+  }
+  return ok;
 }
 
 ShellSolver::ShellSolver(const Scene& scene, const SolverOptions& options)
@@ -263,10 +432,11 @@ ShellSolver::ShellSolver(const Scene& scene, const SolverOptions& options)
 
 ShellSolver::ShellSolver(const Scene& scene, ShellModel model, const SolverOptions& options)
     : impl_(std::make_unique<Impl>(scene, std::move(model), options)) {
-  if (impl_->dofs.FreeCount() == impl_->dofs.DofCount())
+  if (impl_->model.supports.empty() && impl_->model.grippers.empty())
     throw SceneError("supports",
                      "nothing holds the fabric: it is free to move as a rigid body; add a support "
                      "or a gripper");
+  CheckHoldsDoNotConflict(scene, impl_->model);
 }
 
 ShellSolver::~ShellSolver() = default;
@@ -288,7 +458,6 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.nodes = m.model.NodeCount();
   m.summary.elements = m.model.mesh.ElementCount();
   m.summary.dofs = m.model.DofCount();
-  m.summary.free_dofs = m.dofs.FreeCount();
   std::string error;
   if (!m.options.IsValid(&error)) {
     m.Stop(Termination::kInvalidInput, error);
@@ -301,21 +470,28 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.threads_used = 1;
 #endif
   m.state = m.model.reference;
-  m.weight_factor = m.load_factor = 0;
+  m.weight_done = m.loads_done = 0;
+  m.released.assign(m.model.grippers.size(), false);
   m.last_negative_pivots = 0;
-  m.reference_force = m.model.weight_load.norm();
-  for (const auto& load : m.model.loads)
-    m.reference_force +=
-        std::sqrt(static_cast<double>(load.nodes.size())) *
-        (load.force_per_node.norm() + load.moment_per_node.norm() / m.model.characteristic_length);
-  m.system.emplace(m.model, m.dofs);
+  m.retired_timers = SystemTimers();
+  m.system.reset();
+  m.dofs.reset();
 
   bool completed = true;
   for (int i = 0; i < static_cast<int>(m.scene.stages.size()) && completed; ++i)
     completed = m.RunStage(i);
   if (completed) m.Stop(Termination::kCompleted, "every stage reached λ = 1");
 
-  const SystemTimers& t = m.system->timers();
+  SystemTimers t = m.retired_timers;
+  if (m.system) {
+    const SystemTimers& now = m.system->timers();
+    t.assembly_s += now.assembly_s;
+    t.factorization_s += now.factorization_s;
+    t.solve_s += now.solve_s;
+    t.factorizations += now.factorizations;
+    t.ldlt_factorizations += now.ldlt_factorizations;
+  }
+  m.summary.free_dofs = m.dofs ? m.dofs->FreeCount() : -1;
   m.summary.assembly_s = t.assembly_s;
   m.summary.factorization_s = t.factorization_s;
   m.summary.solve_s = t.solve_s;

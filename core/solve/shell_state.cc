@@ -17,14 +17,4 @@ void ApplyIncrement(const Eigen::VectorXd& increment, ShellState& state) {
   }
 }
 
-ShellState Extrapolate(const ShellState& previous, const ShellState& current, double factor) {
-  ShellState next = current;
-  next.positions += factor * (current.positions - previous.positions);
-  for (int i = 0; i < current.NodeCount(); ++i) {
-    const Eigen::Vector3d w = LogRotation(current.rotations[i] * previous.rotations[i].transpose());
-    next.rotations[i] = ExpRotation(factor * w) * current.rotations[i];
-  }
-  return next;
-}
-
 }  // namespace drape

@@ -23,10 +23,4 @@ struct ShellState {
 // Λ ← exp(ŵ) Λ with w = a g₁ + b g₂.
 void ApplyIncrement(const Eigen::VectorXd& increment, ShellState& state);
 
-// The state reached by continuing from `previous` through `current` by
-// `factor` times the same change: positions linearly, rotations along the
-// same relative rotation, Λ = exp(factor · log(Λ_c Λ_pᵀ)) Λ_c. The secant
-// predictor of a continuation step.
-ShellState Extrapolate(const ShellState& previous, const ShellState& current, double factor);
-
 }  // namespace drape

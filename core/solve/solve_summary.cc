@@ -21,6 +21,8 @@ const char* ToString(Termination t) {
       return "stopped by observer";
     case Termination::kInvalidInput:
       return "invalid input";
+    case Termination::kIllPosed:
+      return "ill-posed stage";
   }
   return "?";
 }

@@ -18,6 +18,7 @@ enum class Termination {
   kCancelled,          // the cancellation token was set
   kStoppedByObserver,  // an observer returned kStop
   kInvalidInput,       // options or scene rejected before any work
+  kIllPosed,           // a stage cannot be solved as posed (e.g. nothing holds the fabric)
 };
 
 const char* ToString(Termination termination);

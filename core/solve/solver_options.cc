@@ -26,6 +26,7 @@ SolverOptions SolverOptions::FromScene(const SolverSettings& settings) {
   o.max_steps = settings.max_steps;
   o.max_iterations = settings.max_iterations;
   o.max_step_cuts = settings.max_step_cuts;
+  o.psi = settings.psi.value_or(0.0);
   return o;
 }
 
@@ -66,6 +67,7 @@ bool SolverOptions::IsValid(std::string* error) const {
                divergence_ratio,
                "divergence_ratio > 1",
                error) &&
+         Check(psi >= 0, "psi", psi, "psi >= 0", error) &&
          Check(threads >= 0, "threads", threads, "threads >= 0", error);
 }
 

@@ -21,7 +21,8 @@ struct SolverOptions {
   // Bounds on γ per step: no step grows or shrinks faster than this.
   double min_step_growth = 0.25;
   double max_step_growth = 4.0;
-  // Largest load-factor step of a stage.
+  // Largest load-factor step of a stage (arc-length: the largest Δs, measured
+  // as the Δλ it gives in the stage's first, linear step).
   double max_increment = 0.25;
   // Steps over the whole run; a run that needs more stops with kMaxStepsReached.
   int max_steps = 5000;
@@ -31,6 +32,9 @@ struct SolverOptions {
   int max_step_cuts = 10;
   // ‖R‖/‖R₀‖ above this in any iteration counts as divergence (cut back).
   double divergence_ratio = 1e6;
+  // ψ [m]: weight of λ against lengths in the arc-length constraint; 0 uses
+  // the part's characteristic length (its diagonal).
+  double psi = 0;
   // Threads for element assembly; 0 uses OpenMP's default.
   int threads = 0;
 

@@ -23,12 +23,12 @@ struct NamedVector {
 struct StepState {
   int stage = -1;  // index in the scene's stages
   std::string stage_name;
-  int step = 0;                        // 1-based over the whole run
-  int stage_step = 0;                  // 1-based within the stage
-  double lambda = 0;                   // the stage's load factor
-  int iterations = 0;                  // Newton iterations of this step
-  std::vector<double> residuals;       // ‖R‖/‖R₀‖ per iteration, starting with 1
-  double arc_length = 0;               // the step's length along the path
+  int step = 0;                   // 1-based over the whole run
+  int stage_step = 0;             // 1-based within the stage
+  double lambda = 0;              // the stage's load factor
+  int iterations = 0;             // Newton iterations of this step
+  std::vector<double> residuals;  // ‖R‖/‖R₀‖ after each assembly (R₀: the load the step added)
+  double arc_length = 0;          // the step's length along the path
   int negative_pivots = 0;             // of the converged tangent
   std::vector<NamedVector> reactions;  // force each support and gripper exerts [N]
   std::vector<NamedVector> probes;     // probe positions [m]

@@ -204,13 +204,13 @@ TEST(ShellSolver, UnsupportedFeaturesAreRejectedByKey) {
     return "(accepted)";
   };
   EXPECT_EQ(error_of("rod-drape-linear.json").rfind("obstacles:", 0), 0u);
-  Scene strip = ReadScene(test::ScenesDir() / "strip-fold.json");
-  strip.obstacles.clear();
-  EXPECT_THROW(ShellSolver(strip, SolverOptions()), SceneError);
+  Scene rod = ReadScene(test::ScenesDir() / "rod-drape-nonlinear.json");
+  rod.obstacles.clear();
   try {
-    ShellSolver solver(strip, SolverOptions());
+    ShellSolver solver(rod, SolverOptions());
+    ADD_FAILURE() << "nonlinear bending accepted";
   } catch (const SceneError& e) {
-    EXPECT_EQ(e.where(), "stages[1].kind");
+    EXPECT_EQ(e.where(), "material.bending.model");
   }
 }
 

@@ -1,0 +1,199 @@
+#include "core/solve/arc_length_stepper.h"
+
+#include <cmath>
+
+namespace drape {
+namespace {
+
+// Largest translation in a full increment: the Newton correction's size.
+double MaxTranslation(const Eigen::VectorXd& full) {
+  double m = 0;
+  for (int i = 0; i < full.size() / kDofsPerNode; ++i)
+    m = std::max(m, full.segment<3>(kDofsPerNode * i).cwiseAbs().maxCoeff());
+  return m;
+}
+
+}  // namespace
+
+ArcLengthStepper::ArcLengthStepper(EquilibriumSystem& system,
+                                   const StageLoading& loading,
+                                   const NewtonSettings& newton,
+                                   double psi)
+    : system_(system), loading_(loading), newton_(newton), psi_(psi) {
+  // Moving grippers add no load: judge residuals against the forces present.
+  newton_.relative_to_force_level = loading.MovesGrippers();
+  const DofMap& dofs = system.dofs();
+  translation_mask_.setZero(dofs.FreeCount());
+  for (int d = 0; d < dofs.DofCount(); ++d)
+    if (dofs.Free(d) >= 0 && d % kDofsPerNode < 3) translation_mask_(dofs.Free(d)) = 1;
+}
+
+Eigen::VectorXd ArcLengthStepper::Translations(const Eigen::VectorXd& free) const {
+  return free.cwiseProduct(translation_mask_);
+}
+
+Eigen::VectorXd ArcLengthStepper::AssembleWithRate(const ShellState& state, double lambda) {
+  const Eigen::VectorXd velocity = loading_.Velocity(lambda, state);
+  system_.Assemble(state, /*with_tangent=*/true, loading_.MovesGrippers() ? &velocity : nullptr);
+  Eigen::VectorXd f0 = system_.dofs().Restrict(loading_.ExternalRate(state));
+  if (loading_.MovesGrippers()) f0 -= system_.dofs().Restrict(system_.InternalForceRate());
+  return f0;
+}
+
+ContinuationStep ArcLengthStepper::StepTo(ShellState& state,
+                                          double lambda,
+                                          double target,
+                                          const CancellationToken* cancel) {
+  ContinuationStep out;
+  const DofMap& dofs = system_.dofs();
+  // Tangent predictor: the linear response to the change of λ.
+  const Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
+  system_.Factorize();
+  const Eigen::VectorXd u_i = system_.Solve(f0);
+  const double delta = target - lambda;
+  ApplyIncrement(dofs.Expand(delta * u_i), state);
+  loading_.Place(target, state);
+  NewtonSettings settings = newton_;
+  settings.residual_reference = std::abs(delta) * f0.norm();
+  NewtonOutcome newton = SolveEquilibrium(
+      system_,
+      [&](const ShellState& s) { return loading_.External(target, s); },
+      settings,
+      state,
+      cancel);
+  out.status = newton.status;
+  out.reason = newton.reason;
+  out.iterations = newton.iterations + 1;
+  out.residuals = newton.residuals;
+  out.negative_pivots = newton.negative_pivots;
+  out.lambda = target;
+  out.landed = true;
+  out.direction = {delta * Translations(u_i), delta};
+  out.arc_length = std::abs(delta);
+  return out;
+}
+
+ContinuationStep ArcLengthStepper::Step(ShellState& state,
+                                        double lambda,
+                                        double arc_length,
+                                        double first_increment,
+                                        const PathDirection* previous,
+                                        double target,
+                                        const CancellationToken* cancel) {
+  const DofMap& dofs = system_.dofs();
+  const ShellState start = state;
+  const double lambda_start = lambda;
+  const double speed = loading_.PrescribedSpeed(lambda, state);
+  const double psi2 = psi_ * psi_ + speed * speed;
+
+  // Predictor along the tangent: Δu = Δλ Δu_I with ‖Δu‖² + ψ_e²Δλ² = Δs².
+  Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
+  system_.Factorize();
+  Eigen::VectorXd u_i = system_.Solve(f0);
+  Eigen::VectorXd t_i = Translations(u_i);
+  const double tangent_norm = std::sqrt(t_i.squaredNorm() + psi2);
+  const double ds = arc_length > 0 ? arc_length : first_increment * tangent_norm;
+  double dl = ds / tangent_norm;
+  // Forward: the side on which the tangent agrees with the last step.
+  if (previous && previous->translation.dot(t_i) + psi2 * previous->lambda < 0) dl = -dl;
+  if (dl > 0 && lambda + dl >= target - 1e-12) {
+    ContinuationStep landing = StepTo(state, lambda, target, cancel);
+    landing.arc_length = ds;
+    return landing;
+  }
+
+  ContinuationStep out;
+  out.arc_length = ds;
+  out.iterations = 1;                   // the predictor's solve, as the paper counts it
+  Eigen::VectorXd a = dl * t_i;         // accumulated free translations of the step
+  double b = dl;                        // accumulated Δλ
+  const Eigen::VectorXd predicted = a;  // the predictor's direction, to tell forward from back
+  const double predicted_lambda = b;
+  ApplyIncrement(dofs.Expand(dl * u_i), state);
+  lambda += dl;
+  loading_.Place(lambda, state);
+  const double reference = std::abs(dl) * f0.norm();
+  double last_correction = INFINITY;
+
+  for (int it = 0;; ++it) {
+    if (cancel && cancel->IsCancelled()) {
+      out.status = NewtonOutcome::Status::kCancelled;
+      out.reason = "cancelled";
+      return out;
+    }
+    f0 = AssembleWithRate(state, lambda);
+    const Eigen::VectorXd f_ext = loading_.External(lambda, state);
+    const Eigen::VectorXd r = system_.Residual(f_ext);
+    const double norm = r.norm();
+    const double level = newton_.relative_to_force_level ? system_.ForceLevel(f_ext) : reference;
+    const double ratio = level > 0 ? norm / level : norm;
+    out.residuals.push_back(ratio);
+    if (!std::isfinite(norm) || ratio > newton_.divergence_ratio) {
+      out.status = NewtonOutcome::Status::kDiverged;
+      out.reason = "the residual grew by a factor " + std::to_string(ratio);
+      return out;
+    }
+    if (ratio <= newton_.tolerance || norm <= newton_.residual_floor ||
+        last_correction <= newton_.displacement_floor) {
+      if (lambda > target + 1e-12) {
+        // Converged past the stage's end: redo the step landing on it.
+        state = start;
+        loading_.Place(lambda_start, state);
+        ContinuationStep landing = StepTo(state, lambda_start, target, cancel);
+        landing.arc_length = ds;
+        return landing;
+      }
+      // Near a bifurcation the corrector can wander onto the part of the path
+      // behind the step; that is not progress: cut the step instead.
+      if (a.dot(predicted) + psi2 * b * predicted_lambda <= 0) {
+        out.status = NewtonOutcome::Status::kDiverged;
+        out.reason = "the corrector converged back along the path";
+        return out;
+      }
+      out.status = NewtonOutcome::Status::kConverged;
+      out.negative_pivots = system_.Factorize().negative_pivots;  // at the converged state
+      out.lambda = lambda;
+      out.direction = {a, b};
+      return out;
+    }
+    if (it == newton_.max_iterations) {
+      out.status = NewtonOutcome::Status::kIterationLimit;
+      out.reason = "no convergence in " + std::to_string(it) +
+                   " iterations (‖R‖/‖R₀‖ = " + std::to_string(ratio) + ")";
+      return out;
+    }
+    // Bordered update: two solves with one factorisation.
+    system_.Factorize();
+    const Eigen::VectorXd u_h = system_.Solve(-r);
+    u_i = system_.Solve(f0);
+    const Eigen::VectorXd t_h = Translations(u_h);
+    t_i = Translations(u_i);
+    // δλ from ‖a + t_h + δλ t_i‖² + ψ_e²(b + δλ)² = Δs².
+    const Eigen::VectorXd p = a + t_h;
+    const double a1 = t_i.squaredNorm() + psi2;
+    const double a2 = 2 * (t_i.dot(p) + psi2 * b);
+    const double a3 = p.squaredNorm() + psi2 * b * b - ds * ds;
+    const double disc = a2 * a2 - 4 * a1 * a3;
+    double delta;
+    if (disc < 0) {
+      delta = -a2 / (2 * a1);  // no root: come as close to the sphere as possible
+    } else {
+      const double q = -0.5 * (a2 + std::copysign(std::sqrt(disc), a2));
+      const double r1 = q / a1, r2 = q != 0 ? a3 / q : r1;
+      // The root whose new increment turns least from the current one.
+      auto forward = [&](double x) { return a.dot(p + x * t_i) + psi2 * b * (b + x); };
+      delta = forward(r1) >= forward(r2) ? r1 : r2;
+    }
+    const Eigen::VectorXd correction = u_h + delta * u_i;
+    const Eigen::VectorXd full = dofs.Expand(correction);
+    a += Translations(correction);
+    b += delta;
+    lambda += delta;
+    ApplyIncrement(full, state);
+    loading_.Place(lambda, state);
+    last_correction = MaxTranslation(full);
+    ++out.iterations;
+  }
+}
+
+}  // namespace drape

@@ -1,0 +1,83 @@
+// Adaptive arc-length continuation (Schweizerhof & Wriggers 1986; the paper's
+// constraint with ψ scaling). Each step moves a distance Δs along the
+// equilibrium path in (u, λ) space,
+//
+//   ‖Δu‖² + ψ_e² Δλ² = Δs²,   ψ_e² = ψ² + ‖∂u_p/∂λ‖²,
+//
+// over the free nodes' translations, the prescribed motion's speed folded
+// into ψ. Every iteration solves K twice (bordered update): Δu_H = −K⁻¹R and
+// Δu_I = K⁻¹F₀ with F₀ = ∂F_ext/∂λ − ∂F_int/∂λ (for prescribed motion the
+// paper's −∂P/∂λ, −K_fp ∂u_p/∂λ); δλ solves the constraint's quadratic and
+// the root that keeps going forward is taken. Limit points (where λ turns
+// back) and bifurcations pass; a step that would overshoot λ = 1 lands on it
+// under load control.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "core/solve/equilibrium_system.h"
+#include "core/solve/newton_solver.h"
+#include "core/solve/stage_loading.h"
+#include "core/solve/step_state.h"
+
+namespace drape {
+
+// The last converged step's direction: to continue forward, not back.
+struct PathDirection {
+  Eigen::VectorXd translation;  // Δu over the free DOFs, rotations zeroed
+  double lambda = 0;            // Δλ
+};
+
+struct ContinuationStep {
+  NewtonOutcome::Status status = NewtonOutcome::Status::kDiverged;
+  std::string reason;
+  int iterations = 0;
+  std::vector<double> residuals;
+  int negative_pivots = 0;
+  double lambda = 0;      // reached
+  double arc_length = 0;  // Δs actually used
+  bool landed = false;    // ended exactly on the target λ under load control
+  PathDirection direction;
+};
+
+class ArcLengthStepper {
+ public:
+  ArcLengthStepper(EquilibriumSystem& system,
+                   const StageLoading& loading,
+                   const NewtonSettings& newton,
+                   double psi);
+
+  // One step from the converged (state, λ) of length `arc_length`, or, when
+  // that is ≤ 0, of the length that makes the predictor's Δλ equal
+  // `first_increment`. Lands on λ = `target` when it would pass it. On
+  // failure the caller restores the state.
+  ContinuationStep Step(ShellState& state,
+                        double lambda,
+                        double arc_length,
+                        double first_increment,
+                        const PathDirection* previous,
+                        double target,
+                        const CancellationToken* cancel);
+
+  // A load-controlled step to λ = target (tangent predictor, then Newton).
+  ContinuationStep StepTo(ShellState& state,
+                          double lambda,
+                          double target,
+                          const CancellationToken* cancel);
+
+ private:
+  // Assembles at (state, λ); returns F₀ over the free DOFs.
+  Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);
+  Eigen::VectorXd Translations(const Eigen::VectorXd& free) const;
+
+  EquilibriumSystem& system_;
+  const StageLoading& loading_;
+  NewtonSettings newton_;
+  double psi_;
+  Eigen::VectorXd translation_mask_;  // 1 on free translation DOFs, 0 on rotations
+};
+
+}  // namespace drape

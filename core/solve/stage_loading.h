@@ -1,0 +1,62 @@
+// How one stage's loads and prescribed motions depend on its λ: the weight
+// ramps in a gravity stage, point loads in a load stage, and grippers follow
+// their paths in a move stage. Everything the steppers need to know about λ.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+#include "core/model/scene.h"
+#include "core/solve/dof_map.h"
+#include "core/solve/prescribed_motion.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/shell_state.h"
+
+namespace drape {
+
+// A gripper's nodes where the stage found them, and the path they follow in
+// it (none: held in place).
+struct HeldGripper {
+  const HeldNodes* gripper = nullptr;
+  const Path* path = nullptr;
+  std::vector<Eigen::Vector3d> start_positions;
+  std::vector<Eigen::Matrix3d> start_rotations;
+};
+
+class StageLoading {
+ public:
+  // `weight_before` and `loads_before`: the factors reached by earlier stages.
+  StageLoading(const ShellModel& model,
+               const Stage& stage,
+               const std::vector<HeldGripper>& grippers,
+               double weight_before,
+               double loads_before);
+
+  // Puts the prescribed nodes where λ says (positions; rotations too for clamps).
+  void Place(double lambda, ShellState& state) const;
+  // F_ext at λ, full (5 per node); moments act in the state's nodal bases.
+  Eigen::VectorXd External(double lambda, const ShellState& state) const;
+  // ∂F_ext/∂λ, full.
+  Eigen::VectorXd ExternalRate(const ShellState& state) const;
+  // ∂(prescribed DOFs)/∂λ at λ, full, zero on free DOFs; rotation rates in the
+  // nodal bases (the drilling part has no DOF).
+  Eigen::VectorXd Velocity(double lambda, const ShellState& state) const;
+  // ‖∂u_p/∂λ‖ over the prescribed positions [m]: the grippers' speed in λ.
+  double PrescribedSpeed(double lambda, const ShellState& state) const;
+
+  bool MovesGrippers() const { return moving_; }
+  double WeightFactor(double lambda) const;
+  double LoadFactor(double lambda) const;
+
+ private:
+  Eigen::VectorXd PointLoads(const ShellState& state) const;
+
+  const ShellModel& model_;
+  StageKind kind_;
+  std::vector<HeldGripper> grippers_;
+  double weight_before_, loads_before_;
+  bool moving_ = false;
+};
+
+}  // namespace drape

@@ -1,0 +1,173 @@
+// Grippers moving along paths under arc-length continuation: the paper's
+// strip fold without its table, finite rotations of a gripper, and the bad
+// cases (a node asked to be in two places, nothing left holding the fabric).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/io/scene_reader.h"
+#include "core/model/scene_error.h"
+#include "core/solve/shell_solver.h"
+#include "support/strip_scene.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+struct Steps {
+  SolveSummary summary;
+  std::vector<StepState> steps;
+};
+
+Steps Solve(const Scene& scene) {
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  Steps out;
+  out.summary = solver.Solve({[&](const StepState& s) {
+    out.steps.push_back(s);
+    return StepDecision::kContinue;
+  }});
+  return out;
+}
+
+Eigen::Vector3d Probe(const StepState& s, const std::string& name) {
+  for (const auto& p : s.probes)
+    if (p.name == name) return p.value;
+  ADD_FAILURE() << "no probe " << name;
+  return {};
+}
+
+void PrintStages(const char* label, const SolveSummary& summary) {
+  std::printf("  %s: %d steps, %d iterations, %.3f s\n",
+              label,
+              summary.steps,
+              summary.iterations,
+              summary.total_s);
+  for (const auto& st : summary.stages)
+    std::printf("    stage %-3s %5d steps %6d iterations %3d cut-backs\n",
+                st.name.c_str(),
+                st.steps,
+                st.iterations,
+                st.step_cuts);
+}
+
+TEST(PathFollowing, StripFoldWithoutTableCompletesTheFold) {
+  const Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  Steps run = Solve(scene);
+  PrintStages("strip fold, acceleration on", run.summary);
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  // R carries the left end on a semicircle about (0, 0, h/2) onto (0.1, 0, h);
+  // T pulls it 1 cm further: (0.11, 0, h), h = 0.0469 cm.
+  const double h = 0.0469e-2;
+  const Eigen::Vector3d end = Probe(run.steps.back(), "end");
+  EXPECT_LT((end - Eigen::Vector3d(0.11, 0, h)).norm(), 1e-12);
+  // The gripper turned the clamped end over: its director points down.
+  const int gripped = 0;  // node 0 is the left edge's lower corner
+  EXPECT_LT((run.steps.back().state.Director(gripped) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-9);
+  // Half-way through R the end is at the top of the semicircle.
+  bool passed_top = false;
+  for (const auto& s : run.steps)
+    if (s.stage == 1 && Probe(s, "end").z() > 0.099) passed_top = true;
+  EXPECT_TRUE(passed_top);
+  // Without a table the middle hangs below the held ends as a loop.
+  EXPECT_LT(Probe(run.steps.back(), "fold").z(), -0.05);
+}
+
+TEST(PathFollowing, AccelerationNeedsTenTimesFewerSteps) {
+  // The paper's Table 3: 45 steps with acceleration, 1994 without (R's Δλ₀ is
+  // 0.009 with and 0.0009 without).
+  Scene with = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  Scene without = with;
+  without.solver.acceleration = false;
+  without.solver.max_steps = 100000;
+  without.stages[1].initial_increment = 0.0009;
+  Steps fast = Solve(with);
+  Steps slow = Solve(without);
+  PrintStages("with acceleration", fast.summary);
+  PrintStages("without acceleration", slow.summary);
+  ASSERT_TRUE(fast.summary.IsComplete());
+  ASSERT_TRUE(slow.summary.IsComplete());
+  EXPECT_GE(slow.summary.steps, 10 * fast.summary.steps);
+  // Both carry the end to the same place; the hanging loop below may settle
+  // slightly differently (the R stage crosses buckling points, see the
+  // stability events), so it is only printed.
+  EXPECT_LT((Probe(fast.steps.back(), "end") - Probe(slow.steps.back(), "end")).norm(), 1e-12);
+  const Eigen::Vector3d a = Probe(fast.steps.back(), "fold"), b = Probe(slow.steps.back(), "fold");
+  std::printf("  fold probe: with (%.5f, %.5f, %.5f), without (%.5f, %.5f, %.5f) m\n",
+              a.x(),
+              a.y(),
+              a.z(),
+              b.x(),
+              b.y(),
+              b.z());
+}
+
+TEST(PathFollowing, GripperTurnedTwoFullTurnsReturnsTheStripToItsStart) {
+  // A heavy cantilever (α = 2) is turned by its clamping gripper through 720°
+  // about the axis through the gripped edge: the finite-rotation update must
+  // bring every node back to where the gravity stage left it.
+  test::StripSpec spec;
+  spec.elements = 20;
+  Scene scene = test::HeavyStrip(spec, 2.0, 0.1);
+  scene.stages[0].control = StepControl::kArcLength;
+  // Converge every step to round-off, so that what remains is the error of
+  // the rotation updates, not of the equilibrium tolerance.
+  scene.solver.tolerance = 1e-12;
+  scene.supports.clear();
+  scene.grippers.push_back({"root", Selection{EdgeSelection{Side::kLeft}, {}}, Fixity::kClamp});
+  Stage turn;
+  turn.name = "turn";
+  turn.kind = StageKind::kMove;
+  turn.initial_increment = 0.01;
+  turn.moves.push_back({"root", ArcPath{{0, 0, 0}, {0, 1, 0}, 720.0}});
+  scene.stages.push_back(turn);
+  Steps run = Solve(scene);
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  const StepState* after_gravity = nullptr;
+  for (const auto& s : run.steps)
+    if (s.stage == 0) after_gravity = &s;
+  ASSERT_NE(after_gravity, nullptr);
+  const auto& a = after_gravity->state;
+  const auto& b = run.steps.back().state;
+  const double error = (b.positions - a.positions).cwiseAbs().maxCoeff();
+  std::printf("  after 720°: max position change %.3e m (L = %.2f m), %d steps\n",
+              error,
+              spec.length,
+              run.summary.stages[1].steps);
+  EXPECT_LT(error, 1e-8 * spec.length);
+  for (int i = 0; i < a.NodeCount(); ++i) EXPECT_LT((b.Director(i) - a.Director(i)).norm(), 1e-8);
+}
+
+TEST(PathFollowing, ANodeAskedToBeInTwoPlacesIsRejected) {
+  Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  // The far-end support also takes the gripped left edge: the gripper would
+  // drag nodes the support holds still.
+  scene.supports[0].select = Selection{EdgeSelection{Side::kBoundary}, {}};
+  try {
+    ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.where(), "stages[1].moves[0]");
+    EXPECT_NE(std::string(e.what()).find("cannot be in two places"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PathFollowing, ReleasingTheLastHoldStopsWithAClearMessage) {
+  Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  scene.supports.clear();
+  Stage drop;
+  drop.name = "drop";
+  drop.kind = StageKind::kHold;
+  drop.release = {"end"};
+  scene.stages.resize(1);  // SW only, then let go
+  scene.stages.push_back(drop);
+  Steps run = Solve(scene);
+  EXPECT_EQ(run.summary.termination, Termination::kIllPosed);
+  EXPECT_NE(run.summary.message.find("nothing holds the fabric"), std::string::npos)
+      << run.summary.message;
+  EXPECT_EQ(run.summary.stages.size(), 2u);
+  EXPECT_FALSE(run.steps.empty()) << "the SW steps are kept";
+}
+
+}  // namespace
+}  // namespace drape
