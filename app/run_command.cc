@@ -120,7 +120,7 @@ int RunRun(const RunArgs& args) {
   int last_pivots = 0;
   StepObserver record = [&](const StepState& s) {
     writer->AddStep(s);
-    progress.Show(s, s.step > 1 && s.negative_pivots != last_pivots);
+    progress.Show(s, s.negative_pivots != last_pivots);
     last_pivots = s.negative_pivots;
     return StepDecision::kContinue;
   };

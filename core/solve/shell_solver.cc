@@ -209,7 +209,9 @@ bool ShellSolver::Impl::Emit(int stage_index,
   step.state = state;
   step.elapsed_s = SecondsSince(start);
 
-  if (step.step > 1 && result.negative_pivots != last_negative_pivots)
+  // Against the unloaded start (0 negative pivots), so that a first step that
+  // already lands past a buckling point is reported too.
+  if (result.negative_pivots != last_negative_pivots)
     summary.stability_events.push_back(
         {stage_index, step.step, lambda, last_negative_pivots, result.negative_pivots});
   last_negative_pivots = result.negative_pivots;
@@ -478,9 +480,14 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.dofs.reset();
 
   bool completed = true;
-  for (int i = 0; i < static_cast<int>(m.scene.stages.size()) && completed; ++i)
-    completed = m.RunStage(i);
-  if (completed) m.Stop(Termination::kCompleted, "every stage reached λ = 1");
+  try {
+    for (int i = 0; i < static_cast<int>(m.scene.stages.size()) && completed; ++i)
+      completed = m.RunStage(i);
+    if (completed) m.Stop(Termination::kCompleted, "every stage reached λ = 1");
+  } catch (const std::exception& e) {
+    // CHOLMOD out of memory and the like: the steps reached so far stay valid.
+    m.Stop(Termination::kNumericalFailure, e.what());
+  }
 
   SystemTimers t = m.retired_timers;
   if (m.system) {

@@ -23,6 +23,8 @@ const char* ToString(Termination t) {
       return "invalid input";
     case Termination::kIllPosed:
       return "ill-posed stage";
+    case Termination::kNumericalFailure:
+      return "numerical failure";
   }
   return "?";
 }

@@ -19,6 +19,7 @@ enum class Termination {
   kStoppedByObserver,  // an observer returned kStop
   kInvalidInput,       // options or scene rejected before any work
   kIllPosed,           // a stage cannot be solved as posed (e.g. nothing holds the fabric)
+  kNumericalFailure,   // the linear algebra failed (e.g. out of memory in the factorisation)
 };
 
 const char* ToString(Termination termination);
