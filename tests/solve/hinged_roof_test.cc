@@ -33,13 +33,13 @@
 // and load keep the path on the symmetric branch, which is the reference's.
 //
 // h = 12.7 is loaded by the point load under arc-length control. h = 6.35
-// cannot be: its path needs P < 0 between W_C ≈ 17 and W_C ≈ 24.8, and the
-// solver ends a load stage whose λ turns back below 0 ("the path turned back
-// below λ = 0"). So the thin roof's centre is instead pushed down by a
-// gripper (a `move` stage, also under arc-length control): λ is then W_C/40,
-// which stays positive, and the gripper's reaction is the point load. The
-// equilibrium path is the same set of (W_C, P); the snap-back shows up as λ
-// turning back, which the arc-length stepper must pass.
+// is run both ways: by the point load (its path needs P < 0 between
+// W_C ≈ 17 and W_C ≈ 24.8, i.e. λ < 0 for a while, which the stepper allows
+// down to λ = −1), and with its centre pushed down by a gripper (a `move`
+// stage): λ is then W_C/40, which stays positive, and the gripper's reaction
+// is the point load. The equilibrium path is the same set of (W_C, P); under
+// displacement control the snap-back shows up as λ turning back, which the
+// arc-length stepper must pass.
 //
 // Comparison: both curves are split into runs along which W_C is monotone
 // (the reference has 1 for h = 12.7 and 3 for h = 6.35; the FE path must have
@@ -462,6 +462,33 @@ TEST(HingedRoof, ThinRoofSnapsBackUnderCentralDeflection) {
   EXPECT_GE(runs[1].second - runs[1].first - 1, 3);
   ASSERT_FALSE(run.summary.stability_events.empty());
 
+  CompareWithReference(kReferenceThin, fe, 0.05);
+  CompareTurns(kReferenceThin, fe, /*turning_w=*/true, 0.02, 0.015);
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+TEST(HingedRoof, ThinRoofSnapsBackUnderPointLoad) {
+  // The same snap-back driven by the force itself: λ rises to the first
+  // limit, falls through zero (the load must pull up to hold the roof on its
+  // path) to the second, and rises again.
+  RoofSpec spec;
+  spec.thickness = 6.35;
+  spec.drive = Drive::kPointLoad;
+  spec.load = 1.1 * kPmax;
+  spec.increment = 0.01;
+  const RoofRun run = RunRoof(spec);
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  const auto fe = Curve(run.path);
+  const auto limits = Turns(fe, false);
+  ASSERT_EQ(limits.size(), 2u) << "P should have one maximum and one minimum";
+  EXPECT_GT(limits[0], 0);
+  EXPECT_LT(limits[1], 0);
+  ASSERT_FALSE(run.summary.stability_events.empty());
   CompareWithReference(kReferenceThin, fe, 0.05);
   CompareTurns(kReferenceThin, fe, /*turning_w=*/true, 0.02, 0.015);
 }
