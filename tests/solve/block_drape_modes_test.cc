@@ -270,10 +270,9 @@ TEST(BlockDrapeModes, BothInitialIncrementsReachTheSameSymmetricStableDrape) {
   // iterations (13 against 9, residual up and down).
   EXPECT_GT(drapes[1].first_lambda, drapes[0].first_lambda);
   EXPECT_GT(drapes[3].first_iterations, drapes[2].first_iterations);
-  // The corner-pinned sheet's sag (see ShellSolver tests for its mesh
-  // dependence): about 0.69 in in the middle, 0.52 in at the edges.
-  EXPECT_NEAR(drapes[0].centre / kInch, 0.691, 0.01);
-  EXPECT_NEAR(drapes[0].edges[0] / kInch, 0.520, 0.01);
+  // (The sag itself, about 0.69 in in the middle and 0.52 in at the edges,
+  // is printed, not asserted: it is our own result, and its mesh dependence
+  // is what the ShellSolver mesh-convergence tests check.)
 }
 
 TEST(BlockDrapeModes, ImperfectionSeedsPerturbButDoNotSelectModesOfTheCornerPinnedSheet) {
