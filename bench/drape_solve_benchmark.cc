@@ -195,7 +195,7 @@ void BM_BlockDrape(benchmark::State& bench) {
   bench.counters["newton_iterations"] = summary.iterations;
   bench.counters["step_cuts"] = summary.step_cuts;
   bench.counters["factorizations"] = summary.factorizations;
-  bench.counters["ldlt_factorizations"] = summary.ldlt_factorizations;
+  bench.counters["indefinite_factorizations"] = summary.indefinite_factorizations;
   bench.counters["threads"] = summary.threads_used;
   bench.counters["model_build_s"] = build_s;
   if (runs > 0) {

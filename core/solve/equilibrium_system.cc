@@ -50,7 +50,7 @@ FactorizationInfo EquilibriumSystem::Factorize() {
   FactorizationInfo info = cholesky_.Factorize(tangent_);
   timers_.factorization_s += SecondsSince(start);
   ++timers_.factorizations;
-  if (info.used_ldlt) ++timers_.ldlt_factorizations;
+  if (!info.positive_definite) ++timers_.indefinite_factorizations;
   return info;
 }
 

@@ -17,7 +17,7 @@ struct SystemTimers {
   double factorization_s = 0;
   double solve_s = 0;
   int factorizations = 0;
-  int ldlt_factorizations = 0;
+  int indefinite_factorizations = 0;
 };
 
 class EquilibriumSystem {

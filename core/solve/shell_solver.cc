@@ -143,7 +143,7 @@ void ShellSolver::Impl::UseDofs(DofMap stage_dofs) {
     retired_timers.factorization_s += t.factorization_s;
     retired_timers.solve_s += t.solve_s;
     retired_timers.factorizations += t.factorizations;
-    retired_timers.ldlt_factorizations += t.ldlt_factorizations;
+    retired_timers.indefinite_factorizations += t.indefinite_factorizations;
   }
   system.reset();
   dofs = std::make_unique<DofMap>(std::move(stage_dofs));
@@ -496,14 +496,14 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
     t.factorization_s += now.factorization_s;
     t.solve_s += now.solve_s;
     t.factorizations += now.factorizations;
-    t.ldlt_factorizations += now.ldlt_factorizations;
+    t.indefinite_factorizations += now.indefinite_factorizations;
   }
   m.summary.free_dofs = m.dofs ? m.dofs->FreeCount() : -1;
   m.summary.assembly_s = t.assembly_s;
   m.summary.factorization_s = t.factorization_s;
   m.summary.solve_s = t.solve_s;
   m.summary.factorizations = t.factorizations;
-  m.summary.ldlt_factorizations = t.ldlt_factorizations;
+  m.summary.indefinite_factorizations = t.indefinite_factorizations;
   m.summary.total_s = SecondsSince(m.start);
   return m.summary;
 }

@@ -56,7 +56,7 @@ struct SolveSummary {
   int iterations = 0;
   int step_cuts = 0;
   int factorizations = 0;
-  int ldlt_factorizations = 0;  // factorisations that needed the indefinite path
+  int indefinite_factorizations = 0;  // tangents that were not positive definite
   std::vector<StageSummary> stages;
   std::vector<StabilityEvent> stability_events;
   std::vector<std::string> notes;  // what was used instead of what was asked, and why

@@ -38,6 +38,16 @@ namespace {
 constexpr int kMaxRefinementSteps = 3;
 constexpr double kRefinementTolerance = 1e-14;
 
+// Below this many flops (CHOLMOD's count for the ordered LLᵀ) the supernodal
+// path does not pay: its per-supernode OpenMP regions (CHOLMOD's fixed thread
+// count, not ours) and BLAS calls cost more than the arithmetic, and an
+// indefinite tangent factorises twice. Such matrices go straight to the
+// simplicial LDLᵀ, which gives the inertia in one pass.
+// Measured (bench/sparse_cholesky_benchmark.cc): at 2 000 DOFs (1.3e7 flops)
+// the two paths take the same time for a definite matrix; at 12 500 (2.6e8)
+// the supernodal LLᵀ is twice as fast.
+constexpr double kLdltOnlyFlops = 2e7;
+
 const char* StatusText(int status) {
   switch (status) {
     case CHOLMOD_NOT_INSTALLED:
@@ -68,6 +78,15 @@ void Start(cholmod_common& c) {
   c.print = 0;  // quiet: NOT_POSDEF is an expected outcome, errors become exceptions
   c.error_handler = nullptr;
 }
+
+// A common for one call, finished on every way out.
+struct ScopedCommon {
+  cholmod_common c;
+  ScopedCommon() { Start(c); }
+  ~ScopedCommon() { cholmod_finish(&c); }
+  ScopedCommon(const ScopedCommon&) = delete;
+  ScopedCommon& operator=(const ScopedCommon&) = delete;
+};
 
 // A matrix (upper triangle) as a cholmod_sparse, without a copy. CHOLMOD only
 // reads it.
@@ -179,9 +198,18 @@ struct SparseCholesky::Impl {
   cholmod_factor* ldl_factor = nullptr;  // analysed on the first fallback
 
   int n = -1;                     // -1: not analysed
+  bool ldlt_only = false;         // small factorisations: skip the LLᵀ attempt
   std::vector<int> outer, inner;  // the analysed pattern
+  // The fill-reducing ordering is applied here, not by CHOLMOD: both factors
+  // are analysed in the natural order of `permuted` = P K Pᵀ, whose values
+  // are scattered through `slot` (K's k-th entry → permuted's slot[k]). That
+  // spares CHOLMOD's two permuting transposes per factorisation (12 % of a
+  // small strip-fold run).
+  std::vector<int> perm;  // permuted row r is row perm[r] of K
+  std::vector<int> slot;
+  Eigen::SparseMatrix<double> permuted;
   Active active = Active::kNone;
-  Eigen::VectorXd scale;  // row scales s of the last factorised matrix
+  Eigen::VectorXd scale;  // row scales s of the last factorised (permuted) matrix
   // S K S of the last matrix factorised by LDLᵀ: factorised, and kept for the
   // residuals of the refinement (a copy: the caller may reassemble its matrix
   // before solving).
@@ -192,13 +220,75 @@ struct SparseCholesky::Impl {
     ll.supernodal = CHOLMOD_SUPERNODAL;  // AUTO gives small matrices a simplicial LDLᵀ
     ll.final_ll = 1;
     ll.final_asis = 1;
+    Natural(ll);
 
     Start(ldl);
     ldl.supernodal = CHOLMOD_SIMPLICIAL;
     ldl.final_ll = 0;  // read at each simplicial factorisation: LDLᵀ, not LLᵀ
     ldl.final_asis = 1;
-    ldl.nmethods = 1;
-    ldl.method[0].ordering = CHOLMOD_GIVEN;
+    Natural(ldl);
+  }
+
+  static void Natural(cholmod_common& c) {
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_NATURAL;
+    c.postorder = 0;
+  }
+
+  // The ordering CHOLMOD would choose (AMD or METIS, postordered) and its
+  // flop count, then `permuted`'s pattern and `slot`.
+  double Order(const Eigen::SparseMatrix<double>& upper) {
+    ScopedCommon scoped;
+    cholmod_common& c = scoped.c;
+    c.supernodal = CHOLMOD_SUPERNODAL;
+    cholmod_sparse a = View(upper);
+    cholmod_factor* symbolic = cholmod_analyze(&a, &c);
+    ThrowOnError(c, "analyze");
+    if (!symbolic) throw std::runtime_error("SparseCholesky: CHOLMOD analyze failed");
+    const int* p = static_cast<const int*>(symbolic->Perm);
+    perm.assign(p, p + n);
+    const double flops = c.fl;
+    cholmod_free_factor(&symbolic, &c);
+
+    std::vector<int> inverse(n);
+    for (int r = 0; r < n; ++r) inverse[perm[r]] = r;
+    // Entry k of K lands at (row, col) = sorted (inverse[i], inverse[j]);
+    // counting sort by column, then by row within each column.
+    const int nnz = static_cast<int>(inner.size());
+    std::vector<int> row(nnz), col(nnz);
+    for (int j = 0; j < n; ++j)
+      for (int k = outer[j]; k < outer[j + 1]; ++k) {
+        const int a = inverse[inner[k]], b = inverse[j];
+        row[k] = std::min(a, b);
+        col[k] = std::max(a, b);
+      }
+    std::vector<int> by_row(nnz), start(n + 1, 0);
+    for (int k = 0; k < nnz; ++k) ++start[row[k] + 1];
+    for (int r = 0; r < n; ++r) start[r + 1] += start[r];
+    for (int k = 0; k < nnz; ++k) by_row[start[row[k]]++] = k;
+    std::vector<int> p_outer(n + 1, 0), p_inner(nnz);
+    for (int k = 0; k < nnz; ++k) ++p_outer[col[k] + 1];
+    for (int j = 0; j < n; ++j) p_outer[j + 1] += p_outer[j];
+    std::vector<int> next(p_outer.begin(), p_outer.end() - 1);
+    slot.assign(nnz, -1);
+    for (int k : by_row) {  // rows ascending: each column comes out sorted
+      slot[k] = next[col[k]]++;
+      p_inner[slot[k]] = row[k];
+    }
+    permuted = Eigen::SparseMatrix<double>(n, n);
+    permuted.resizeNonZeros(nnz);
+    std::copy(p_outer.begin(), p_outer.end(), permuted.outerIndexPtr());
+    std::copy(p_inner.begin(), p_inner.end(), permuted.innerIndexPtr());
+    permuted.coeffs().setZero();
+    return flops;
+  }
+
+  // permuted = P K Pᵀ for K with the analysed pattern.
+  void Permute(const Eigen::SparseMatrix<double>& k) {
+    const double* x = k.valuePtr();
+    double* y = permuted.valuePtr();
+    const int nnz = static_cast<int>(slot.size());
+    for (int q = 0; q < nnz; ++q) y[slot[q]] = x[q];
   }
 
   ~Impl() {
@@ -232,7 +322,7 @@ struct SparseCholesky::Impl {
   }
 
   void AnalyzeLdlt(cholmod_sparse& a) {
-    ldl_factor = cholmod_analyze_p(&a, static_cast<int*>(ll_factor->Perm), nullptr, 0, &ldl);
+    ldl_factor = cholmod_analyze(&a, &ldl);
     ThrowOnError(ldl, "analyze (LDLᵀ)");
     if (!ldl_factor) throw std::runtime_error("SparseCholesky: CHOLMOD analyze (LDLᵀ) failed");
   }
@@ -258,9 +348,12 @@ struct SparseCholesky::Impl {
   Eigen::VectorXd Multiply(const Eigen::VectorXd& x) const {
     return (scaled.selfadjointView<Eigen::Upper>() * x.cwiseQuotient(scale)).cwiseQuotient(scale);
   }
+
+  Eigen::VectorXd SolvePermuted(const Eigen::VectorXd& b, cholmod_common& c) const;
 };
 
-SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
+SparseCholesky::SparseCholesky(FactorizationPath path)
+    : path_(path), impl_(std::make_unique<Impl>()) {}
 
 SparseCholesky::~SparseCholesky() = default;
 
@@ -272,14 +365,22 @@ void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {
   m.scaled.resize(0, 0);
   info_ = FactorizationInfo{};
 
-  cholmod_sparse a = View(upper);
-  m.ll_factor = cholmod_analyze(&a, &m.ll);
-  ThrowOnError(m.ll, "analyze");
-  if (!m.ll_factor) throw std::runtime_error("SparseCholesky: CHOLMOD analyze failed");
-
-  m.n = static_cast<int>(upper.rows());
-  m.outer.assign(upper.outerIndexPtr(), upper.outerIndexPtr() + m.n + 1);
+  const int n = static_cast<int>(upper.rows());
+  m.outer.assign(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1);
   m.inner.assign(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
+  m.n = n;
+  try {
+    const double flops = m.Order(upper);
+    m.ldlt_only = path_ == FactorizationPath::kLdltOnly ||
+                  (path_ == FactorizationPath::kAuto && flops < kLdltOnlyFlops);
+    cholmod_sparse a = View(m.permuted);
+    m.ll_factor = cholmod_analyze(&a, &m.ll);
+    ThrowOnError(m.ll, "analyze");
+    if (!m.ll_factor) throw std::runtime_error("SparseCholesky: CHOLMOD analyze failed");
+  } catch (...) {
+    m.n = -1;
+    throw;
+  }
 }
 
 FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& upper) {
@@ -294,14 +395,17 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
         std::to_string(m.n) + ", " + std::to_string(m.inner.size()) + " entries)");
   m.active = Impl::Active::kNone;
   info_ = FactorizationInfo{};
-  RowScales(upper, m.scale);  // throws for a non-finite entry
+  m.Permute(upper);
+  RowScales(m.permuted, m.scale);  // throws for a non-finite entry
   const double bound = std::max(1, m.n) * std::numeric_limits<double>::epsilon();
 
   // Supernodal LLᵀ: the positive-definiteness test and the fast path.
-  cholmod_sparse a = View(upper);
-  cholmod_factorize(&a, m.ll_factor, &m.ll);
-  ThrowOnError(m.ll, "factorize (LLᵀ)");
-  if (m.ll.status == CHOLMOD_OK && m.ll_factor->minor == static_cast<size_t>(m.n) &&
+  cholmod_sparse a = View(m.permuted);
+  if (!m.ldlt_only) {
+    cholmod_factorize(&a, m.ll_factor, &m.ll);
+    ThrowOnError(m.ll, "factorize (LLᵀ)");
+  }
+  if (!m.ldlt_only && m.ll.status == CHOLMOD_OK && m.ll_factor->minor == static_cast<size_t>(m.n) &&
       PivotsAboveBound(*m.ll_factor, m.scale, bound)) {
     m.active = Impl::Active::kLLt;
     info_.positive_definite = true;
@@ -310,7 +414,7 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
   }
 
   // Simplicial LDLᵀ of S K S for the inertia, in the same ordering.
-  m.Scale(upper);
+  m.Scale(m.permuted);
   cholmod_sparse s = View(m.scaled);
   if (!m.ldl_factor) m.AnalyzeLdlt(s);
   m.ldl.dbound = bound;
@@ -352,23 +456,28 @@ Eigen::VectorXd SparseCholesky::Solve(const Eigen::VectorXd& b) const {
 
   // A common of its own: Solve changes nothing shared, so const Solves may run
   // concurrently.
-  cholmod_common c;
-  Start(c);
-  struct Finish {
-    cholmod_common& c;
-    ~Finish() { cholmod_finish(&c); }
-  } finish{c};
+  ScopedCommon scoped;
+  Eigen::VectorXd permuted_b(m.n);
+  for (int r = 0; r < m.n; ++r) permuted_b[r] = b[m.perm[r]];
+  const Eigen::VectorXd permuted_x = m.SolvePermuted(permuted_b, scoped.c);
+  Eigen::VectorXd x(m.n);
+  for (int r = 0; r < m.n; ++r) x[m.perm[r]] = permuted_x[r];
+  return x;
+}
 
-  if (m.active == Impl::Active::kLLt) return m.FactorSolve(b, c);
+// P K Pᵀ y = b in the permuted order.
+Eigen::VectorXd SparseCholesky::Impl::SolvePermuted(const Eigen::VectorXd& b,
+                                                    cholmod_common& c) const {
+  if (active == Active::kLLt) return FactorSolve(b, c);
 
   // LDLᵀ: refine until ‖r‖ ≤ 1e-14‖b‖, no improvement, or 3 steps.
-  Eigen::VectorXd x = m.LdltSolve(b, c);
+  Eigen::VectorXd x = LdltSolve(b, c);
   const double target = kRefinementTolerance * b.norm();
-  Eigen::VectorXd r = b - m.Multiply(x);
+  Eigen::VectorXd r = b - Multiply(x);
   double r_norm = r.norm();
   for (int step = 0; step < kMaxRefinementSteps && r_norm > target; ++step) {
-    Eigen::VectorXd candidate = x + m.LdltSolve(r, c);
-    Eigen::VectorXd candidate_r = b - m.Multiply(candidate);
+    Eigen::VectorXd candidate = x + LdltSolve(r, c);
+    Eigen::VectorXd candidate_r = b - Multiply(candidate);
     const double candidate_norm = candidate_r.norm();
     if (!(candidate_norm < r_norm)) break;  // no improvement: keep the better x
     x = std::move(candidate);

@@ -5,7 +5,8 @@
 // first and doubles as the positive-definiteness test; when it fails, a
 // simplicial LDLᵀ gives the inertia: the number of negative pivots, the
 // stability indicator of the path following (a change means a limit or
-// bifurcation point was crossed).
+// bifurcation point was crossed). Small matrices, where the supernodal path
+// does not pay, go straight to the LDLᵀ.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -21,9 +22,15 @@ struct FactorizationInfo {
   bool used_ldlt = false;
 };
 
+enum class FactorizationPath {
+  kAuto,      // LDLᵀ only below a measured size, LLᵀ first above it
+  kLltFirst,  // supernodal LLᵀ, LDLᵀ when it is not positive definite
+  kLdltOnly,  // simplicial LDLᵀ always
+};
+
 class SparseCholesky {
  public:
-  SparseCholesky();
+  explicit SparseCholesky(FactorizationPath path = FactorizationPath::kAuto);
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -44,6 +51,7 @@ class SparseCholesky {
 
  private:
   struct Impl;
+  FactorizationPath path_;
   std::unique_ptr<Impl> impl_;
   FactorizationInfo info_;
 };

@@ -100,7 +100,7 @@ struct Drape {
   int final_pivots = -1;              // of the converged final state
   int max_pivots = 0;                 // over every converged step
   int stability_events = 0;
-  int ldlt_factorizations = 0;  // tangents that were not positive definite
+  int indefinite_factorizations = 0;  // tangents that were not positive definite
   Eigen::VectorXd z;            // final z of every node [m]
   double MaxAsymmetry() const { return *std::max_element(asymmetry.begin(), asymmetry.end()); }
 };
@@ -146,7 +146,7 @@ Drape RunDrape(const std::string& label, const Scene& scene) {
   d.steps = summary.steps;
   d.iterations = summary.iterations;
   d.stability_events = static_cast<int>(summary.stability_events.size());
-  d.ldlt_factorizations = summary.ldlt_factorizations;
+  d.indefinite_factorizations = summary.indefinite_factorizations;
   if (summary.steps == 0) return d;
   d.final_pivots = last.negative_pivots;
   d.centre = ProbeSag(last, "centre");
@@ -209,7 +209,7 @@ void PrintRow(const Drape& d, double dist) {
       d.final_pivots,
       d.max_pivots,
       d.stability_events,
-      d.ldlt_factorizations);
+      d.indefinite_factorizations);
 }
 
 void PrintFirstStep(const Drape& d) {
@@ -223,7 +223,7 @@ void ExpectSmoothSymmetricStable(const Drape& d) {
   EXPECT_EQ(d.max_pivots, 0) << d.label << ": a negative pivot on the path";
   EXPECT_EQ(d.final_pivots, 0) << d.label;
   EXPECT_EQ(d.stability_events, 0) << d.label;
-  EXPECT_EQ(d.ldlt_factorizations, 0) << d.label << ": a tangent not positive definite";
+  EXPECT_EQ(d.indefinite_factorizations, 0) << d.label << ": a tangent not positive definite";
   EXPECT_LT(d.MaxAsymmetry(), 1e-9 * d.centre) << d.label << ": D4 symmetry broken";
   for (double edge : d.edges) EXPECT_NEAR(edge, d.edges[0], 1e-9 * d.centre) << d.label;
   EXPECT_GT(d.centre, d.edges[0]) << d.label << ": the middle sags most";
@@ -309,7 +309,7 @@ TEST(BlockDrapeModes, ImperfectionSeedsPerturbButDoNotSelectModesOfTheCornerPinn
     EXPECT_EQ(d.max_pivots, 0) << d.label;
     EXPECT_EQ(d.final_pivots, 0) << d.label;
     EXPECT_EQ(d.stability_events, 0) << d.label;
-    EXPECT_EQ(d.ldlt_factorizations, 0) << d.label;
+    EXPECT_EQ(d.indefinite_factorizations, 0) << d.label;
     // ...but one mode, not four: the drape moves by the order of the
     // waviness (measured: about twice it), not by the order of the sag, and
     // every mirror of the square stays a symmetry up to that.

@@ -193,17 +193,20 @@ std::vector<double> DenseEigenvalues(const SparseMatrix& upper) {
   return std::vector<double>(ev.data(), ev.data() + ev.size());
 }
 
-// Analyse, factorise and check the inertia and the solve.
+// Analyse, factorise and check the inertia and the solve, by both paths.
 void ExpectInertia(const SparseMatrix& k, int negative, double tolerance, std::mt19937_64& rng) {
-  SparseCholesky chol;
-  chol.Analyze(k);
-  const FactorizationInfo info = chol.Factorize(k);
-  EXPECT_EQ(info.negative_pivots, negative);
-  EXPECT_EQ(info.zero_pivots, 0);
-  EXPECT_EQ(info.positive_definite, negative == 0);
-  EXPECT_EQ(info.used_ldlt, negative != 0);
-  const Eigen::VectorXd b = RandomVector(static_cast<int>(k.rows()), rng);
-  EXPECT_LT(RelativeResidual(k, chol.Solve(b), b), tolerance);
+  for (FactorizationPath path : {FactorizationPath::kLltFirst, FactorizationPath::kLdltOnly}) {
+    SCOPED_TRACE(path == FactorizationPath::kLltFirst ? "LLT first" : "LDLT only");
+    SparseCholesky chol(path);
+    chol.Analyze(k);
+    const FactorizationInfo info = chol.Factorize(k);
+    EXPECT_EQ(info.negative_pivots, negative);
+    EXPECT_EQ(info.zero_pivots, 0);
+    EXPECT_EQ(info.positive_definite, negative == 0);
+    EXPECT_EQ(info.used_ldlt, path == FactorizationPath::kLdltOnly || negative != 0);
+    const Eigen::VectorXd b = RandomVector(static_cast<int>(k.rows()), rng);
+    EXPECT_LT(RelativeResidual(k, chol.Solve(b), b), tolerance);
+  }
 }
 
 TEST(SparseCholesky, SolvesRandomSpdMatrices) {
@@ -211,7 +214,7 @@ TEST(SparseCholesky, SolvesRandomSpdMatrices) {
   for (auto [nx, ny] : {std::pair{3, 4}, {10, 10}, {20, 15}, {40, 40}, {70, 70}}) {
     SCOPED_TRACE(testing::Message() << nx << " x " << ny);
     const SparseMatrix k = RandomSpd(nx, ny, 0.1, rng);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_TRUE(info.positive_definite);
@@ -271,7 +274,7 @@ TEST(SparseCholesky, InertiaDoesNotDependOnUnits) {
     const SparseMatrix k = Laplacian2D(nx, ny, sigma);
     const Eigen::VectorXd s = RandomScales(n, 6.0, rng);
     const SparseMatrix scaled = ScaleSymmetric(k, s);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(scaled);
     const FactorizationInfo info = chol.Factorize(scaled);
     EXPECT_EQ(info.negative_pivots, m);
@@ -291,7 +294,7 @@ TEST(SparseCholesky, ZeroDiagonalIsFlaggedNotSilentlyWrong) {
   for (int n : {2, 10, 1000}) {
     SCOPED_TRACE(testing::Message() << "n = " << n);
     const SparseMatrix k = Laplacian1D(n, 2.0);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_TRUE(info.used_ldlt);
@@ -306,7 +309,7 @@ TEST(SparseCholesky, ShellLikeBlockMatrixSpd) {
   for (auto [nx, ny] : {std::pair{2, 2}, {5, 4}, {20, 20}, {30, 35}}) {
     SCOPED_TRACE(testing::Message() << nx << " x " << ny << " nodes");
     const SparseMatrix k = ShellLike(nx, ny, 0.0, rng);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_TRUE(info.positive_definite);
@@ -345,7 +348,7 @@ TEST(SparseCholesky, RefactorizesWithOneAnalysis) {
   std::mt19937_64 rng(7);
   const int nx = 25, ny = 18, n = nx * ny;
   const std::vector<double> ev = Laplacian2DEigenvalues(nx, ny);
-  SparseCholesky chol;
+  SparseCholesky chol(FactorizationPath::kLltFirst);
   chol.Analyze(Laplacian2D(nx, ny, 0.0));
   const int sequence[] = {0, 0, 3, 0, 40, 41, 150, 0, n, 7, 0, 1, 0, n / 4, 0, 0, 99, 3};
   for (int round = 0; round < 3; ++round)
@@ -386,7 +389,7 @@ TEST(SparseCholesky, SolveUsesItsOwnCopyOfTheMatrix) {
   int m = 100;
   const double sigma = ShiftBelow(ev, m);
   const SparseMatrix k = Laplacian1D(500, sigma);
-  SparseCholesky chol;
+  SparseCholesky chol(FactorizationPath::kLltFirst);
   {
     SparseMatrix temporary = k;
     chol.Analyze(temporary);
@@ -403,7 +406,7 @@ TEST(SparseCholesky, ConcurrentSolvesAgree) {
     const std::vector<double> ev = Laplacian2DEigenvalues(30, 30);
     const double sigma = ShiftBelow(ev, m);
     const SparseMatrix k = Laplacian2D(30, 30, sigma);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     chol.Factorize(k);
     std::vector<Eigen::VectorXd> b, x(4);
@@ -420,7 +423,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
   // Neumann Laplacians: positive semidefinite, one zero eigenvalue.
   for (int n : {2, 50, 1000, 5000}) {
     SCOPED_TRACE(testing::Message() << "1-D Neumann, n = " << n);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     const SparseMatrix k = Laplacian1D(n, 0.0, true);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
@@ -435,7 +438,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     const SparseMatrix k = Laplacian2D(nx, ny, 0.0, true);
     for (double units : {0.0, 5.0}) {
       const SparseMatrix scaled = ScaleSymmetric(k, RandomScales(nx * ny, units, rng));
-      SparseCholesky chol;
+      SparseCholesky chol(FactorizationPath::kLltFirst);
       chol.Analyze(scaled);
       const FactorizationInfo info = chol.Factorize(scaled);
       EXPECT_EQ(info.zero_pivots, 1);
@@ -453,7 +456,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     for (int i = 0; i < n; ++i) s[i] = i % 5 < 3 ? 1.0 : 1e-3;
     for (const SparseMatrix& matrix : {k, ScaleSymmetric(k, s)}) {
       SCOPED_TRACE(testing::Message() << "shell-like " << nx << " x " << ny);
-      SparseCholesky chol;
+      SparseCholesky chol(FactorizationPath::kLltFirst);
       chol.Analyze(matrix);
       const FactorizationInfo info = chol.Factorize(matrix);
       EXPECT_FALSE(info.positive_definite);
@@ -472,7 +475,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     if (stored) t.emplace_back(zero, zero, 0.0);
     AddLaplacian1D(zero + 1, n - zero - 1, 0.0, false, t);
     const SparseMatrix k = Upper(n, t);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_FALSE(info.positive_definite);
@@ -491,7 +494,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
       if (i + 1 < 60) t.emplace_back(80 + i, 81 + i, 1.0);
     }
     const SparseMatrix k = Upper(140, t);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_EQ(info.zero_pivots, 1);
@@ -503,7 +506,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     Triplets t;
     for (int i = 0; i < 10; ++i) t.emplace_back(i, i, 0.0);
     const SparseMatrix k = Upper(10, t);
-    SparseCholesky chol;
+    SparseCholesky chol(FactorizationPath::kLltFirst);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_EQ(info.zero_pivots, 10);
@@ -513,7 +516,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
 
 TEST(SparseCholesky, RejectsMisuse) {
   const SparseMatrix k = Laplacian1D(20, 0.0);
-  SparseCholesky chol;
+  SparseCholesky chol(FactorizationPath::kLltFirst);
   EXPECT_THROW(chol.Factorize(k), std::logic_error);
   EXPECT_THROW(chol.Solve(Eigen::VectorXd::Ones(20)), std::logic_error);
 
