@@ -45,6 +45,7 @@ struct ResultWriter::Impl {
   json steps = json::array();
   StepState last;
   bool has_last = false;
+  bool contact = false;  // the scene has obstacles
 };
 
 ResultWriter::ResultWriter(const std::filesystem::path& directory,
@@ -66,7 +67,11 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
   impl_->csv.open(directory / kStepsCsvFileName);
   if (!impl_->csv)
     throw std::runtime_error("cannot create '" + (directory / kStepsCsvFileName).string() + "'");
+  impl_->contact = !scene.obstacles.empty();
   impl_->csv << "stage,stage_name,step,lambda,iterations,arc_length,negative_pivots";
+  if (impl_->contact)
+    impl_->csv << ",contact_nodes,contact_force_x_N,contact_force_y_N,contact_force_z_N,"
+                  "max_penetration_m";
   for (const auto& probe : model.probes)
     for (const char* axis : {"x", "y", "z"}) impl_->csv << "," << probe.name << "_" << axis << "_m";
   impl_->csv << "\n";
@@ -87,6 +92,13 @@ void ResultWriter::AddStep(const StepState& step) {
          {"negative_pivots", step.negative_pivots},
          {"reactions", Named(step.reactions)},
          {"probes", Named(step.probes)}};
+  if (step.contact) {
+    s["contact"] = {{"nodes", step.contact->nodes},
+                    {"force", Vector(step.contact->force)},
+                    {"max_penetration", step.contact->max_penetration}};
+    if (step.contact->max_stabilization_force > 0)
+      s["contact"]["max_stabilization_force"] = step.contact->max_stabilization_force;
+  }
   impl_->steps.push_back(std::move(s));
   auto& csv = impl_->csv;
   csv.precision(17);
@@ -96,6 +108,11 @@ void ResultWriter::AddStep(const StepState& step) {
     name.insert(at, 1, '"');
   csv << step.stage << ",\"" << name << "\"," << step.step << "," << step.lambda << ","
       << step.iterations << "," << step.arc_length << "," << step.negative_pivots;
+  if (impl_->contact) {
+    const ContactReport c = step.contact.value_or(ContactReport{});
+    csv << "," << c.nodes << "," << c.force.x() << "," << c.force.y() << "," << c.force.z() << ","
+        << c.max_penetration;
+  }
   for (const auto& p : step.probes)
     csv << "," << p.value.x() << "," << p.value.y() << "," << p.value.z();
   csv << "\n";
@@ -127,6 +144,10 @@ void ResultWriter::Finish(const SolveSummary& summary) {
                                      {"negative_pivots_before", e.negative_pivots_before},
                                      {"negative_pivots_after", e.negative_pivots_after}});
   r["notes"] = summary.notes;
+  if (summary.contact_penalty > 0)
+    r["contact"] = {{"penalty", summary.contact_penalty},
+                    {"max_penetration", summary.max_penetration},
+                    {"max_stabilization_force", summary.max_stabilization_force}};
   r["steps"] = impl_->steps;
   json final_state = json::object();
   if (impl_->has_last) {
@@ -136,6 +157,7 @@ void ResultWriter::Finish(const SolveSummary& summary) {
     final_state["step"] = impl_->last.step;
     final_state["positions"] = std::move(positions);
     final_state["probes"] = Named(impl_->last.probes);
+    if (impl_->last.contact) final_state["contact_pressure"] = impl_->last.contact->pressure;
   }
   r["final"] = std::move(final_state);
   r["timing"] = {{"total_s", summary.total_s},

@@ -466,7 +466,11 @@ Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
     default: {
       auto m = c["mesh"];
       m.ExpectObject({"file"});
-      o.shape = MeshShape{ReadFileReference(m["file"])};
+      MeshShape mesh{ReadFileReference(m["file"]), {}};
+      const fs::path file(mesh.file);
+      mesh.resolved_path =
+          (file.is_absolute() ? file : fs::absolute(base_ / file)).lexically_normal().string();
+      o.shape = mesh;
     }
   }
   return o;

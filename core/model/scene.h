@@ -197,8 +197,10 @@ struct SphereShape {
   friend bool operator==(const SphereShape&, const SphereShape&) = default;
 };
 struct MeshShape {
-  std::string file;  // OBJ or STL, relative to the scene file
-  friend bool operator==(const MeshShape&, const MeshShape&) = default;
+  std::string file;  // OBJ or STL, as written in the scene (relative to it)
+  // Where the reader found it (absolute); not part of the scene's meaning.
+  std::string resolved_path;
+  friend bool operator==(const MeshShape& a, const MeshShape& b) { return a.file == b.file; }
 };
 using ObstacleShape = std::variant<PlaneShape, BoxShape, CylinderShape, SphereShape, MeshShape>;
 

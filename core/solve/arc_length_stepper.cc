@@ -133,8 +133,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
       out.reason = "the residual grew by a factor " + std::to_string(ratio);
       return out;
     }
-    if (ratio <= newton_.tolerance || norm <= newton_.residual_floor ||
-        last_correction <= newton_.displacement_floor) {
+    if (newton_.Converged(out.residuals, norm, last_correction)) {
       if (lambda > target + 1e-12) {
         // Converged past the stage's end: redo the step landing on it.
         state = start;

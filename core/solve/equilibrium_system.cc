@@ -1,5 +1,6 @@
 #include "core/solve/equilibrium_system.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -12,10 +13,50 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-EquilibriumSystem::EquilibriumSystem(const ShellModel& model, const DofMap& dofs)
-    : dofs_(dofs), assembler_(model, dofs), tangent_(assembler_.Pattern()) {
+EquilibriumSystem::EquilibriumSystem(const ShellModel& model,
+                                     const DofMap& dofs,
+                                     const NodeContact* contact)
+    : dofs_(dofs), contact_(contact), assembler_(model, dofs), tangent_(assembler_.Pattern()) {
   internal_.setZero(model.DofCount());
   if (dofs.FreeCount() > 0) cholesky_.Analyze(tangent_);
+  if (!contact_) return;
+  // Every node's translational block is in the element pattern already.
+  const int* outer = tangent_.outerIndexPtr();
+  const int* inner = tangent_.innerIndexPtr();
+  block_slots_.resize(model.NodeCount());
+  for (int i = 0; i < model.NodeCount(); ++i) {
+    int pair = 0;
+    for (int a = 0; a < 3; ++a)
+      for (int b = a; b < 3; ++b, ++pair) {
+        const int fa = dofs.Free(kDofsPerNode * i + a), fb = dofs.Free(kDofsPerNode * i + b);
+        int& slot = block_slots_[i][pair];
+        slot = -1;
+        if (fa < 0 || fb < 0) continue;
+        const int row = std::min(fa, fb), col = std::max(fa, fb);
+        const int* at = std::lower_bound(inner + outer[col], inner + outer[col + 1], row);
+        slot = static_cast<int>(at - inner);
+      }
+  }
+}
+
+void EquilibriumSystem::AddContact(const ShellState& state,
+                                   bool with_tangent,
+                                   const Eigen::VectorXd* velocity) {
+  contact_->Add(state,
+                internal_,
+                with_tangent ? &contact_blocks_ : nullptr,
+                with_tangent ? velocity : nullptr,
+                with_tangent && velocity ? &rate_ : nullptr);
+  if (!with_tangent) return;
+  double* values = tangent_.valuePtr();
+  for (size_t i = 0; i < block_slots_.size(); ++i) {
+    const Eigen::Matrix3d& k = contact_blocks_[i];
+    if (k.isZero(0.0)) continue;
+    int pair = 0;
+    for (int a = 0; a < 3; ++a)
+      for (int b = a; b < 3; ++b, ++pair)
+        if (block_slots_[i][pair] >= 0) values[block_slots_[i][pair]] += k(a, b);
+  }
 }
 
 double EquilibriumSystem::Assemble(const ShellState& state,
@@ -24,6 +65,7 @@ double EquilibriumSystem::Assemble(const ShellState& state,
   const auto start = std::chrono::steady_clock::now();
   const double energy = assembler_.Assemble(
       state, internal_, with_tangent ? &tangent_ : nullptr, velocity, velocity ? &rate_ : nullptr);
+  if (contact_) AddContact(state, with_tangent, velocity);
   timers_.assembly_s += SecondsSince(start);
   return energy;
 }

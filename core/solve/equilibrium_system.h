@@ -6,6 +6,7 @@
 #include <Eigen/SparseCore>
 
 #include "core/solve/dof_map.h"
+#include "core/solve/node_contact.h"
 #include "core/solve/shell_assembler.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/sparse_cholesky.h"
@@ -22,7 +23,11 @@ struct SystemTimers {
 
 class EquilibriumSystem {
  public:
-  EquilibriumSystem(const ShellModel& model, const DofMap& dofs);
+  // `contact` (may be null: no obstacles, no contact code runs) must
+  // outlive the system.
+  EquilibriumSystem(const ShellModel& model,
+                    const DofMap& dofs,
+                    const NodeContact* contact = nullptr);
 
   // Assembles the internal force (and the tangent) at `state`; returns the
   // energy. With `velocity` (prescribed DOF rates, 5 per node) and the
@@ -51,8 +56,15 @@ class EquilibriumSystem {
   int ColorCount() const { return assembler_.ColorCount(); }
 
  private:
+  void AddContact(const ShellState& state, bool with_tangent, const Eigen::VectorXd* velocity);
+
   const DofMap& dofs_;
+  const NodeContact* contact_;
   ShellAssembler assembler_;
+  // Per node, the tangent's slots of the upper triangle of its 3×3
+  // translational block (row-major pairs a ≤ b; −1 where a DOF is fixed).
+  std::vector<std::array<int, 6>> block_slots_;
+  std::vector<Eigen::Matrix3d> contact_blocks_;
   Eigen::SparseMatrix<double> tangent_;
   Eigen::VectorXd internal_;
   Eigen::VectorXd rate_;

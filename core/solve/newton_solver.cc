@@ -34,8 +34,7 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
     const double reference = settings.relative_to_force_level ? system.ForceLevel(f_ext) : r0;
     const double ratio = reference > 0 ? norm / reference : 0.0;
     out.residuals.push_back(ratio);
-    if (ratio <= settings.tolerance || norm <= settings.residual_floor ||
-        last_correction <= settings.displacement_floor) {
+    if (settings.Converged(out.residuals, norm, last_correction)) {
       out.status = NewtonOutcome::Status::kConverged;
       // The stability indicator belongs to the converged state, whose tangent
       // was just assembled.

@@ -28,6 +28,20 @@ struct NewtonSettings {
   double displacement_floor = 0;  // a correction max|Δu| at or below this is converged [m]
   int max_iterations = 30;
   double divergence_ratio = 1e6;
+
+  // Converged: the residual is small, or at round-off, or the corrections
+  // have stopped and so has the residual (`ratios`: every ‖R‖/‖R₀‖ so far,
+  // the current one last). A stiff penalty (contact) turns a residual of a
+  // few percent of a node's weight into a correction below the displacement
+  // floor, so a small correction while the residual still falls fast is not
+  // equilibrium yet.
+  bool Converged(const std::vector<double>& ratios, double norm, double last_correction) const {
+    const double ratio = ratios.back();
+    if (ratio <= tolerance || norm <= residual_floor) return true;
+    if (last_correction > displacement_floor) return false;
+    const bool stalled = ratios.size() < 2 || ratio > 0.1 * ratios[ratios.size() - 2];
+    return stalled || ratio * ratio <= tolerance;
+  }
 };
 
 struct NewtonOutcome {

@@ -16,8 +16,6 @@ namespace {
 
 // Rejects, by key, what the engine cannot model yet.
 void CheckSupported(const Scene& scene) {
-  if (!scene.obstacles.empty())
-    throw SceneError("obstacles", "contact with obstacles is not supported by this version yet");
   if (std::holds_alternative<OrthotropicMembrane>(scene.material.membrane))
     throw SceneError("material.membrane",
                      "orthotropic membranes are not supported by this version yet");
@@ -108,6 +106,7 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
   const Mesh& mesh = model.mesh;
   model.section = SectionOf(scene.material);
   model.characteristic_length = OutlineSize(scene.fabric.outline);
+  model.thickness = scene.material.thickness;
 
   const double angle = scene.material.angle_deg * M_PI / 180.0;
   const Eigen::Vector3d material_x(std::cos(angle), std::sin(angle), 0.0);

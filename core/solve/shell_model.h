@@ -48,6 +48,7 @@ struct ShellModel {
   std::vector<NodalLoad> loads;
   std::vector<ProbePoint> probes;
   double characteristic_length = 0;  // diagonal of the part [m]
+  double thickness = 0;              // h [m]
 
   int NodeCount() const { return mesh.NodeCount(); }
   int DofCount() const { return kDofsPerNode * mesh.NodeCount(); }

@@ -15,12 +15,15 @@
 #include "core/solve/dof_map.h"
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/newton_solver.h"
+#include "core/solve/node_contact.h"
 #include "core/solve/stage_loading.h"
 
 namespace drape {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr double kStabilization = 1e-8;  // of the membrane stiffness, per node
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -73,11 +76,52 @@ void CheckHoldsDoNotConflict(const Scene& scene, const ShellModel& model) {
   }
 }
 
+// Whether the held nodes alone stop every rigid motion: three of them not on
+// one line (a clamp fixes position and director, so one clamped node with a
+// second held node also does).
+bool HoldsRestrainRigidMotion(const ShellModel& model, const DofMap& dofs) {
+  std::vector<Eigen::Vector3d> held;
+  bool clamped = false;
+  for (int i = 0; i < model.NodeCount(); ++i)
+    if (dofs.IsFixed(kDofsPerNode * i)) {
+      held.push_back(model.reference.positions.row(i).transpose());
+      clamped = clamped || dofs.IsFixed(kDofsPerNode * i + 3);
+    }
+  if (held.size() < 2) return false;
+  if (clamped) return true;
+  const double tiny = 1e-12 * model.characteristic_length * model.characteristic_length;
+  for (size_t a = 1; a < held.size(); ++a)
+    for (size_t b = a + 1; b < held.size(); ++b)
+      if ((held[a] - held[0]).cross(held[b] - held[0]).norm() > tiny) return true;
+  return false;
+}
+
+std::unique_ptr<NodeContact> MakeContact(const Scene& scene, const ShellModel& model) {
+  if (scene.obstacles.empty()) return nullptr;
+  std::vector<NamedObstacle> obstacles;
+  for (const auto& o : scene.obstacles) obstacles.push_back({o.name, MakeObstacleGeometry(o, ".")});
+  const double penalty =
+      scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
+  auto contact = std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0);
+  // A fabric that starts inside an obstacle has no meaningful first step.
+  const auto inside = contact->Penetrations(model.reference, 1e-3 * model.thickness);
+  if (!inside.empty()) {
+    std::string message = "the fabric starts inside an obstacle: " + inside.front();
+    if (inside.size() > 1) message += " (and " + std::to_string(inside.size() - 1) + " more nodes)";
+    throw SceneError("obstacles", message + "; raise the fabric or move the obstacle");
+  }
+  return contact;
+}
+
 }  // namespace
 
 struct ShellSolver::Impl {
   Impl(const Scene& s, ShellModel m, const SolverOptions& o)
-      : scene(s), options(o), model(std::move(m)), released(model.grippers.size(), false) {}
+      : scene(s),
+        options(o),
+        model(std::move(m)),
+        released(model.grippers.size(), false),
+        contact(MakeContact(scene, model)) {}
 
   DofMap StageDofs() const;
   void UseDofs(DofMap stage_dofs);
@@ -110,7 +154,8 @@ struct ShellSolver::Impl {
   Scene scene;
   SolverOptions options;
   ShellModel model;
-  std::vector<bool> released;  // per gripper
+  std::vector<bool> released;            // per gripper
+  std::unique_ptr<NodeContact> contact;  // null without obstacles
   // The DOF map of the current stage, and the system built on it.
   std::unique_ptr<DofMap> dofs;
   std::unique_ptr<EquilibriumSystem> system;
@@ -147,7 +192,7 @@ void ShellSolver::Impl::UseDofs(DofMap stage_dofs) {
   }
   system.reset();
   dofs = std::make_unique<DofMap>(std::move(stage_dofs));
-  system = std::make_unique<EquilibriumSystem>(model, *dofs);
+  system = std::make_unique<EquilibriumSystem>(model, *dofs, contact.get());
 }
 
 std::vector<HeldGripper> ShellSolver::Impl::Holds(const Stage& stage) const {
@@ -206,6 +251,13 @@ bool ShellSolver::Impl::Emit(int stage_index,
   for (size_t g = 0; g < model.grippers.size(); ++g) reaction(model.grippers[g], !released[g]);
   for (const auto& probe : model.probes)
     step.probes.push_back({probe.name, ProbePosition(model, probe, state)});
+  if (contact) {
+    step.contact = contact->Report(state);
+    summary.max_penetration = std::max(summary.max_penetration, step.contact->max_penetration);
+    summary.max_stabilization_force =
+        std::max(summary.max_stabilization_force, step.contact->max_stabilization_force);
+    contact->Commit(state);
+  }
   step.state = state;
   step.elapsed_s = SecondsSince(start);
 
@@ -406,7 +458,15 @@ bool ShellSolver::Impl::RunStage(int index) {
     for (size_t g = 0; g < model.grippers.size(); ++g)
       if (model.grippers[g].name == name) released[g] = true;
   DofMap stage_dofs = StageDofs();
-  if (stage_dofs.FreeCount() == stage_dofs.DofCount()) {
+  if (contact) {
+    // Springs (see node_contact.h) only where contact alone must hold the
+    // fabric; 1e-8 of the membrane stiffness per node keeps such a pivot
+    // well above the zero-pivot bound while its force stays small.
+    const bool needed = !HoldsRestrainRigidMotion(model, stage_dofs);
+    contact->SetStabilization(needed ? kStabilization * model.section.membrane.diagonal().maxCoeff()
+                                     : 0.0);
+  }
+  if (!contact && stage_dofs.FreeCount() == stage_dofs.DofCount()) {
     Stop(Termination::kIllPosed,
          "stage '" + spec.name + "': nothing holds the fabric (every support and gripper is " +
              "released), so it would move as a rigid body; keep a support or a gripper");
@@ -434,7 +494,7 @@ ShellSolver::ShellSolver(const Scene& scene, const SolverOptions& options)
 
 ShellSolver::ShellSolver(const Scene& scene, ShellModel model, const SolverOptions& options)
     : impl_(std::make_unique<Impl>(scene, std::move(model), options)) {
-  if (impl_->model.supports.empty() && impl_->model.grippers.empty())
+  if (impl_->model.supports.empty() && impl_->model.grippers.empty() && !impl_->contact)
     throw SceneError("supports",
                      "nothing holds the fabric: it is free to move as a rigid body; add a support "
                      "or a gripper");
@@ -472,6 +532,10 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.threads_used = 1;
 #endif
   m.state = m.model.reference;
+  if (m.contact) {
+    m.contact->Commit(m.state);
+    m.summary.contact_penalty = m.contact->penalty();
+  }
   m.weight_done = m.loads_done = 0;
   m.released.assign(m.model.grippers.size(), false);
   m.last_negative_pivots = 0;

@@ -95,6 +95,20 @@ std::string SolveSummary::FullReport() const {
                 solve_s,
                 observer_s);
   s << row;
+  if (contact_penalty > 0) {
+    std::snprintf(row,
+                  sizeof row,
+                  "  contact: penalty %.4g N/m^3, largest penetration %.4g m",
+                  contact_penalty,
+                  max_penetration);
+    s << row;
+    if (max_stabilization_force > 0) {
+      std::snprintf(
+          row, sizeof row, ", largest stabilisation force %.3g N", max_stabilization_force);
+      s << row;
+    }
+    s << "\n";
+  }
   for (const auto& note : notes) s << "  note: " << note << "\n";
   s << "  termination: " << ToString(termination) << " — " << message << "\n";
   return s.str();

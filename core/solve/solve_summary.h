@@ -61,6 +61,11 @@ struct SolveSummary {
   std::vector<StabilityEvent> stability_events;
   std::vector<std::string> notes;  // what was used instead of what was asked, and why
 
+  // Contact (scenes with obstacles; zero otherwise).
+  double contact_penalty = 0;          // k per area used [N/m³]
+  double max_penetration = 0;          // over every converged step [m]
+  double max_stabilization_force = 0;  // largest nodal spring force, any step [N]
+
   double total_s = 0;
   double assembly_s = 0;
   double factorization_s = 0;

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,17 @@ struct NamedVector {
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
 };
 
+// What contact does in a state (scenes with obstacles).
+struct ContactReport {
+  int nodes = 0;                                    // nodes in contact
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // obstacles on the fabric [N]
+  double max_penetration = 0;                       // largest −g [m], ≥ 0
+  // The stabilisation springs of a scene held only by contact (zero when off).
+  Eigen::Vector3d stabilization_force = Eigen::Vector3d::Zero();  // Σ [N]
+  double max_stabilization_force = 0;                             // largest nodal [N]
+  std::vector<double> pressure;  // per node: contact force / tributary area [Pa]
+};
+
 struct StepState {
   int stage = -1;  // index in the scene's stages
   std::string stage_name;
@@ -29,11 +41,12 @@ struct StepState {
   int iterations = 0;             // Newton iterations of this step
   std::vector<double> residuals;  // ‖R‖/‖R₀‖ after each assembly (R₀: the load the step added)
   double arc_length = 0;          // the step's length along the path
-  int negative_pivots = 0;             // of the converged tangent
-  std::vector<NamedVector> reactions;  // force each support and gripper exerts [N]
-  std::vector<NamedVector> probes;     // probe positions [m]
-  ShellState state;                    // the converged configuration
-  double elapsed_s = 0;                // since the run started
+  int negative_pivots = 0;               // of the converged tangent
+  std::vector<NamedVector> reactions;    // force each support and gripper exerts [N]
+  std::vector<NamedVector> probes;       // probe positions [m]
+  std::optional<ContactReport> contact;  // present when the scene has obstacles
+  ShellState state;                      // the converged configuration
+  double elapsed_s = 0;                  // since the run started
 };
 
 enum class StepDecision { kContinue, kStop };

@@ -383,7 +383,13 @@ struct InvalidCase {
 
 const std::vector<InvalidCase>& InvalidCases() {
   static const std::vector<InvalidCase> cases = {
-      {"obstacle", [] { return SceneJson("rod-drape-linear.json"); }, "obstacles:"},
+      {"fabric inside an obstacle",
+       [] {
+         json doc = SceneJson("strip-fold.json");
+         doc["obstacles"][0]["plane"]["point"] = {0, 0, "1 cm"};
+         return doc;
+       },
+       "obstacles: the fabric starts inside an obstacle: node"},
       {"nonlinear bending",
        [] {
          json doc = BlockDrape(10);

@@ -1,0 +1,22 @@
+// A closed triangle mesh (OBJ or STL) as an obstacle: a dress form, a shaped
+// table. Signed distance by the closest triangle (bounding-volume tree) with
+// the sign from angle-weighted pseudo-normals (Bærentzen & Aanæs 2005), so it
+// is right at faces, edges and vertices alike.
+#pragma once
+
+#include "core/model/obstacle_geometry.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace drape {
+
+// Reads and checks the mesh. Throws SceneError (where = `where`, e.g.
+// "obstacles[1].mesh.file") when the file cannot be read, is neither OBJ nor
+// STL, has no triangles, degenerate triangles, or is not closed (an edge not
+// shared by exactly two triangles) — the message says which and where.
+std::unique_ptr<ObstacleGeometry> MakeTriangleMeshGeometry(const std::filesystem::path& file,
+                                                           const std::string& where);
+
+}  // namespace drape

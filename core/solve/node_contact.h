@@ -1,0 +1,87 @@
+// Penalty contact of the fabric's nodes with rigid obstacles (DESIGN.md §8).
+//
+// A node at signed distance d from an obstacle has the gap g = d − h/2 (the
+// fabric's surface is half a thickness from its midsurface). For g < 0 the
+// energy is ½ k A g², with k the penalty per area and A the node's share of
+// the reference area, so the penalty is mesh independent: the force is
+// −k A g n and the tangent k A (n nᵀ + g ∇∇d).
+//
+// Scenes held only by contact (a sheet on a frictionless table, a strip hung
+// over a rod) have rigid motions that nothing resists; for those, weak springs
+// tie each node to where it was at the end of the last converged step
+// (Abaqus's "contact stabilisation"): their force vanishes as the steps
+// settle, and the largest one is reported so the user can judge it.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/model/obstacle_geometry.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/shell_state.h"
+#include "core/solve/step_state.h"
+
+namespace drape {
+
+struct NamedObstacle {
+  std::string name;
+  std::unique_ptr<ObstacleGeometry> geometry;
+};
+
+class NodeContact {
+ public:
+  // `penalty`: k per area [N/m³]; `stabilization`: spring per node [N/m], 0
+  // for none.
+  NodeContact(const ShellModel& model,
+              std::vector<NamedObstacle> obstacles,
+              double penalty,
+              double stabilization);
+
+  // Adds ∂E/∂x of contact and stabilisation to `internal` (5 per node) and,
+  // with `blocks`, each node's 3×3 translational tangent block (row-major).
+  // With `velocity` and `rate`, adds the contact tangent times the
+  // prescribed velocity (the λ-rate of the force at moving nodes).
+  void Add(const ShellState& state,
+           Eigen::VectorXd& internal,
+           std::vector<Eigen::Matrix3d>* blocks,
+           const Eigen::VectorXd* velocity,
+           Eigen::VectorXd* rate) const;
+
+  // The stabilisation springs start again from `state` (a converged step).
+  void Commit(const ShellState& state);
+  void SetStabilization(double per_node) { stabilization_ = per_node; }
+
+  ContactReport Report(const ShellState& state) const;
+  // Nodes deeper than `depth` inside an obstacle: "node N is X mm inside
+  // 'table'" lines, for the start of a run.
+  std::vector<std::string> Penetrations(const ShellState& state, double depth) const;
+
+  double penalty() const { return penalty_; }
+  double stabilization() const { return stabilization_; }
+  double half_thickness() const { return half_thickness_; }
+  const std::vector<double>& nodal_area() const { return area_; }
+
+ private:
+  // Calls f(node, obstacle, g, query) for every node in contact.
+  template <typename F>
+  void ForEachContact(const ShellState& state, F&& f) const;
+
+  std::vector<NamedObstacle> obstacles_;
+  std::vector<double> area_;  // tributary reference area per node [m²]
+  double penalty_;
+  double stabilization_;
+  double half_thickness_;
+  Eigen::MatrixXd anchors_;  // node positions of the last converged step
+};
+
+// k per area for `contact.penalty: "auto"`: the membrane stiffness of the
+// section over the square of the mean element size, E h / ℓ² [N/m³]. A node
+// then pushes into an obstacle about as hard as it pulls on its neighbours,
+// so the penetration under a load p is p ℓ² / (E h) while the tangent keeps
+// the conditioning it had without contact.
+double AutoPenalty(const ShellModel& model);
+
+}  // namespace drape
