@@ -24,6 +24,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr double kStabilization = 1e-8;  // of the membrane stiffness, per node
+constexpr int kMaxSettlePasses = 5;
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -134,6 +135,9 @@ struct ShellSolver::Impl {
   bool RunHold(int index, const StageLoading& loading, StageSummary& stage);
   bool RunLoadControl(int index, const StageLoading& loading, StageSummary& stage);
   bool RunArcLength(int index, const StageLoading& loading, StageSummary& stage);
+  // Re-solves at the stage's end, springs re-anchored, until their force is
+  // negligible: the stage then ends in the equilibrium without them.
+  bool Settle(int index, const StageLoading& loading, StageSummary& stage);
   // Shared bookkeeping of a failed step: true to retry smaller, false to stop.
   bool RetryAfterFailure(const ContinuationStep& step,
                          const Stage& spec,
@@ -156,6 +160,7 @@ struct ShellSolver::Impl {
   ShellModel model;
   std::vector<bool> released;            // per gripper
   std::unique_ptr<NodeContact> contact;  // null without obstacles
+  double last_stabilization_force = 0;   // of the last converged step [N]
   // The DOF map of the current stage, and the system built on it.
   std::unique_ptr<DofMap> dofs;
   std::unique_ptr<EquilibriumSystem> system;
@@ -256,6 +261,7 @@ bool ShellSolver::Impl::Emit(int stage_index,
     summary.max_penetration = std::max(summary.max_penetration, step.contact->max_penetration);
     summary.max_stabilization_force =
         std::max(summary.max_stabilization_force, step.contact->max_stabilization_force);
+    last_stabilization_force = step.contact->max_stabilization_force;
     contact->Commit(state);
   }
   step.state = state;
@@ -329,6 +335,42 @@ bool ShellSolver::Impl::RunHold(int index, const StageLoading& loading, StageSum
   stage.steps = 1;
   stage.final_lambda = 1;
   return Emit(index, 1, 1.0, loading, step);
+}
+
+bool ShellSolver::Impl::Settle(int index, const StageLoading& loading, StageSummary& stage) {
+  // Each pass shrinks the springs' force by about k_s / k of the structure;
+  // stop at round-off of the weight.
+  const double negligible = 1e-12 * model.total_weight.norm();
+  for (int pass = 0; pass < kMaxSettlePasses; ++pass) {
+    if (last_stabilization_force <= negligible) return true;
+    NewtonSettings settings = Newton();
+    settings.relative_to_force_level = true;
+    NewtonOutcome newton = SolveEquilibrium(
+        *system,
+        [&](const ShellState& s) { return loading.External(1.0, s); },
+        settings,
+        state,
+        cancel);
+    stage.iterations += newton.iterations;
+    summary.iterations += newton.iterations;
+    if (newton.status == NewtonOutcome::Status::kCancelled) {
+      Stop(Termination::kCancelled, "cancelled in stage '" + stage.name + "'");
+      return false;
+    }
+    if (newton.status != NewtonOutcome::Status::kConverged) {
+      Stop(Termination::kStepTooSmall,
+           "stage '" + stage.name + "' did not settle without its stabilisation: " + newton.reason);
+      return false;
+    }
+    if (newton.iterations == 0) return true;  // already in equilibrium without them
+    ContinuationStep step;
+    step.iterations = newton.iterations;
+    step.residuals = newton.residuals;
+    step.negative_pivots = newton.negative_pivots;
+    ++stage.steps;
+    if (!Emit(index, stage.steps, 1.0, loading, step)) return false;
+  }
+  return true;
 }
 
 bool ShellSolver::Impl::RunLoadControl(int index,
@@ -482,6 +524,7 @@ bool ShellSolver::Impl::RunStage(int index) {
     ok = RunLoadControl(index, loading, stage);
   else
     ok = RunArcLength(index, loading, stage);
+  if (ok && contact && contact->stabilization() > 0) ok = Settle(index, loading, stage);
   if (ok) {
     weight_done = loading.WeightFactor(1.0);
     loads_done = loading.LoadFactor(1.0);
