@@ -12,6 +12,7 @@
 #include "core/io/scene_writer.h"
 #include "core/model/fabric_mesh.h"
 #include "core/model/node_selection.h"
+#include "core/model/obstacle_geometry.h"
 #include "core/model/scene_error.h"
 
 namespace drape::app {
@@ -48,6 +49,9 @@ int RunValidate(const ValidateArgs& args) {
     Scene scene = ReadScene(args.scene);
     Mesh mesh = MeshFabric(scene.fabric);
     auto selections = ResolveSelections(scene, mesh);
+    // Mesh obstacles are read and checked (closed, readable) here too.
+    for (size_t i = 0; i < scene.obstacles.size(); ++i)
+      MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]");
     if (args.resolved)
       std::cout << WriteSceneText(scene);
     else

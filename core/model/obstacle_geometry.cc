@@ -28,7 +28,7 @@ Vector3d AnyPerpendicular(const Vector3d& a) {
 class PlaneGeometry final : public ObstacleGeometry {
  public:
   explicit PlaneGeometry(const PlaneShape& s)
-      : point_(ToVector(s.point)), normal_(ToVector(s.normal)) {}
+      : point_(ToVector(s.point)), normal_(ToVector(s.normal).normalized()) {}
 
   DistanceQuery Query(const Vector3d& x) const override {
     return {normal_.dot(x - point_), normal_, Matrix3d::Zero()};
@@ -62,7 +62,7 @@ class CylinderGeometry final : public ObstacleGeometry {
  public:
   explicit CylinderGeometry(const CylinderShape& s)
       : point_(ToVector(s.point)),
-        axis_(ToVector(s.axis)),
+        axis_(ToVector(s.axis).normalized()),
         radius_(s.radius),
         half_length_(s.length ? 0.5 * *s.length : -1.0) {}
 
@@ -150,7 +150,8 @@ class BoxGeometry final : public ObstacleGeometry {
 }  // namespace
 
 std::unique_ptr<ObstacleGeometry> MakeObstacleGeometry(const Obstacle& obstacle,
-                                                       const std::filesystem::path& scene_dir) {
+                                                       const std::filesystem::path& scene_dir,
+                                                       const std::string& where) {
   return std::visit(Overloaded{[](const PlaneShape& s) -> std::unique_ptr<ObstacleGeometry> {
                                  return std::make_unique<PlaneGeometry>(s);
                                },
@@ -168,8 +169,7 @@ std::unique_ptr<ObstacleGeometry> MakeObstacleGeometry(const Obstacle& obstacle,
                                      s.resolved_path.empty()
                                          ? scene_dir / s.file
                                          : std::filesystem::path(s.resolved_path);
-                                 return MakeTriangleMeshGeometry(
-                                     file, "obstacle '" + obstacle.name + "' (mesh.file)");
+                                 return MakeTriangleMeshGeometry(file, where + ".mesh.file");
                                }},
                     obstacle.shape);
 }

@@ -29,9 +29,10 @@ class ObstacleGeometry {
 };
 
 // The geometry of a scene's obstacle. A mesh obstacle's file is read relative
-// to `scene_dir`; unreadable or open meshes throw SceneError naming the
-// obstacle.
+// to `scene_dir` (unless the reader resolved it); unreadable or open meshes
+// throw SceneError at `where` (the obstacle's JSON path, e.g. "obstacles[1]").
 std::unique_ptr<ObstacleGeometry> MakeObstacleGeometry(const Obstacle& obstacle,
-                                                       const std::filesystem::path& scene_dir);
+                                                       const std::filesystem::path& scene_dir,
+                                                       const std::string& where = "obstacles");
 
 }  // namespace drape

@@ -308,9 +308,10 @@ RawMesh ReadMesh(const std::filesystem::path& file, const Reporter& report) {
     report.Fail("unknown mesh format " + Quoted(file.extension().string()) +
                 " (expected .obj or .stl)");
   std::error_code error;
-  std::ifstream in(file, std::ios::binary);
-  if (!std::filesystem::is_regular_file(file, error) || !in)
+  if (!std::filesystem::is_regular_file(file, error))
     report.Fail("cannot read mesh file " + Quoted(file.string()));
+  std::ifstream in(file, std::ios::binary);
+  if (!in) report.Fail("cannot read mesh file " + Quoted(file.string()));
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad()) report.Fail("cannot read mesh file " + Quoted(file.string()));
   return extension == ".obj" ? ReadObj(bytes, report) : ReadStl(bytes, report);
@@ -318,8 +319,8 @@ RawMesh ReadMesh(const std::filesystem::path& file, const Reporter& report) {
 
 // ---- checks -----------------------------------------------------------------
 
-// One side of an edge: triangle `triangle` runs from vertex `from` to `to`
-// as its local edge `local` (corner local → corner local + 1).
+// One triangle's side of an undirected edge: its local edge `local` runs
+// from its corner `local` to corner `local + 1`.
 struct HalfEdge {
   int lo, hi;  // the undirected edge, lo < hi
   int triangle;
@@ -361,7 +362,7 @@ std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
     }
   }
   if (degenerate > 0)
-    report.Fail(Plural(degenerate, "degenerate triangle", "degenerate triangles") +
+    report.Fail("has " + Plural(degenerate, "degenerate triangle", "degenerate triangles") +
                 " (zero area), e.g. " + TriangleName(mesh, first_degenerate));
 
   std::vector<HalfEdge> edges;
@@ -558,8 +559,8 @@ TriangleMeshGeometry::TriangleMeshGeometry(const RawMesh& mesh,
   }
 }
 
-// Median split on the longest axis of the centroids' box: balanced, so the
-// depth stays near log2(n).
+// Median split along the longest extent of the triangles' box centres:
+// balanced, so the depth stays near log2(n) and the query's stack small.
 int TriangleMeshGeometry::Build(std::vector<int>& order,
                                 int begin,
                                 int end,
@@ -647,13 +648,13 @@ DistanceQuery TriangleMeshGeometry::Query(const Vector3d& x) const {
   const double d = sign * r;
   if (r <= tiny_) return {d, pseudo_normal.normalized(), Matrix3d::Zero()};
 
+  const Vector3d n = offset * (sign / r);
   // An edge or vertex hit with x − c along this face's normal lies on the
   // border of the face's region; taking the face there gives the right
   // (zero) curvature over flat edges and vertices, such as a cap's centre.
   if ((!on_edge && !on_vertex) || std::abs(offset.dot(face_normal)) >= (1.0 - 1e-14) * r)
-    return {d, face_normal, Matrix3d::Zero()};
+    return {d, n.dot(face_normal) >= 0.0 ? face_normal : Vector3d(-face_normal), Matrix3d::Zero()};
 
-  const Vector3d n = offset * (sign / r);
   Matrix3d h = Matrix3d::Identity() - n * n.transpose();
   if (on_edge) {
     const int k = feature - 1;

@@ -5,17 +5,26 @@
 #include <cstdio>
 
 namespace drape {
+namespace {
+
+constexpr double kTouching = 1e-9;  // of the half thickness
+
+}  // namespace
 
 NodeContact::NodeContact(const ShellModel& model,
                          std::vector<NamedObstacle> obstacles,
                          double penalty,
-                         double stabilization)
+                         double stabilization,
+                         double friction)
     : obstacles_(std::move(obstacles)),
       area_(model.NodeCount(), 0.0),
       penalty_(penalty),
       stabilization_(stabilization),
       half_thickness_(0.5 * model.thickness),
-      anchors_(model.reference.positions) {
+      friction_(friction),
+      anchors_(model.reference.positions),
+      stick_(static_cast<size_t>(model.NodeCount()) * obstacles_.size(),
+             Eigen::Vector3d::Constant(std::nan(""))) {
   // The consistent share ∫ N_I dA, as for the self-weight.
   for (int e = 0; e < model.mesh.ElementCount(); ++e)
     for (const auto& gp : model.elements[e].gauss)
@@ -29,11 +38,44 @@ void NodeContact::ForEachContact(const ShellState& state, F&& f) const {
     for (size_t o = 0; o < obstacles_.size(); ++o) {
       const DistanceQuery q = obstacles_[o].geometry->Query(x);
       const double g = q.distance - half_thickness_;
-      // Touching (g = 0) counts: its stiffness lets a predictor see the
-      // obstacle it rests on.
-      if (g <= 0.0) f(i, static_cast<int>(o), g, q);
+      // Touching counts (with no force): its stiffness lets a predictor see
+      // the obstacle the fabric rests on. "Touching" allows for round-off in
+      // the distance of a node placed exactly on a curved surface.
+      if (g <= kTouching * half_thickness_) f(i, static_cast<int>(o), std::min(g, 0.0), q, x);
     }
   }
+}
+
+Eigen::Vector3d NodeContact::FrictionAnchor(int i, int o) const {
+  // A node that came into contact during this step sticks from where it was
+  // at the last converged step.
+  const Eigen::Vector3d& stuck = stick_[static_cast<size_t>(i) * obstacles_.size() + o];
+  return stuck.hasNaN() ? Eigen::Vector3d(anchors_.row(i).transpose()) : stuck;
+}
+
+NodeContact::NodeResponse NodeContact::Respond(
+    int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) const {
+  const double k = penalty_ * area_[i];
+  const Eigen::Vector3d& n = q.normal;
+  NodeResponse r;
+  r.normal_force = -k * g;
+  r.force = r.normal_force * n;
+  r.stiffness = k * (n * n.transpose() + g * q.hessian);
+  if (friction_ <= 0.0 || r.normal_force <= 0.0) return r;
+  const Eigen::Vector3d anchor = FrictionAnchor(i, o);
+  const Eigen::Matrix3d tangential = Eigen::Matrix3d::Identity() - n * n.transpose();
+  const Eigen::Vector3d slip = tangential * (x - anchor);
+  // Smooth Coulomb law f_t = −μ f_n s / √(|s|² + ε²) with ε = μ f_n / (k A):
+  // stiffness k A for small slip (stick), μ f_n for large (slide), and no
+  // switch between the two for Newton to chatter on.
+  const double limit = friction_ * r.normal_force;
+  const double epsilon = limit / k;
+  const double root = std::sqrt(slip.squaredNorm() + epsilon * epsilon);
+  r.force -= limit / root * slip;
+  // The dependence on f_n (unsymmetric, and indefinite in its symmetric
+  // part) is left out; what stays is positive semidefinite.
+  r.stiffness += limit / root * (tangential - slip * slip.transpose() / (root * root));
+  return r;
 }
 
 void NodeContact::Add(const ShellState& state,
@@ -43,15 +85,15 @@ void NodeContact::Add(const ShellState& state,
                       Eigen::VectorXd* rate) const {
   const int n = state.NodeCount();
   if (blocks) blocks->assign(n, Eigen::Matrix3d::Zero());
-  ForEachContact(state, [&](int i, int, double g, const DistanceQuery& q) {
-    const double k = penalty_ * area_[i];
-    internal.segment<3>(kDofsPerNode * i) += k * g * q.normal;
-    if (!blocks && !(velocity && rate)) return;
-    const Eigen::Matrix3d stiffness = k * (q.normal * q.normal.transpose() + g * q.hessian);
-    if (blocks) (*blocks)[i] += stiffness;
-    if (velocity && rate)
-      rate->segment<3>(kDofsPerNode * i) += stiffness * velocity->segment<3>(kDofsPerNode * i);
-  });
+  ForEachContact(state,
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                   const NodeResponse r = Respond(i, o, g, q, x);
+                   internal.segment<3>(kDofsPerNode * i) -= r.force;
+                   if (blocks) (*blocks)[i] += r.stiffness;
+                   if (velocity && rate)
+                     rate->segment<3>(kDofsPerNode * i) +=
+                         r.stiffness * velocity->segment<3>(kDofsPerNode * i);
+                 });
   if (stabilization_ <= 0.0) return;
   for (int i = 0; i < n; ++i) {
     internal.segment<3>(kDofsPerNode * i) +=
@@ -62,22 +104,40 @@ void NodeContact::Add(const ShellState& state,
 
 void NodeContact::Commit(const ShellState& state) {
   anchors_ = state.positions;
+  if (friction_ <= 0.0) return;
+  std::vector<Eigen::Vector3d> next(stick_.size(), Eigen::Vector3d::Constant(std::nan("")));
+  ForEachContact(state,
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                   const size_t at = static_cast<size_t>(i) * obstacles_.size() + o;
+                   // The slip carries over, so a node whose friction balances its load
+                   // stays put in the next step: the anchor keeps its offset from x in
+                   // the tangent plane.
+                   const Eigen::Vector3d anchor = FrictionAnchor(i, o);
+                   const Eigen::Matrix3d tangential =
+                       Eigen::Matrix3d::Identity() - q.normal * q.normal.transpose();
+                   next[at] = x - tangential * (x - anchor);
+                 });
+  stick_ = std::move(next);
 }
 
 ContactReport NodeContact::Report(const ShellState& state) const {
   ContactReport r;
   std::vector<Eigen::Vector3d> force(state.NodeCount(), Eigen::Vector3d::Zero());
+  std::vector<double> normal(state.NodeCount(), 0.0);
   std::vector<bool> touching(state.NodeCount(), false);
-  ForEachContact(state, [&](int i, int, double g, const DistanceQuery& q) {
-    touching[i] = true;
-    force[i] -= penalty_ * area_[i] * g * q.normal;
-    r.max_penetration = std::max(r.max_penetration, -g);
-  });
+  ForEachContact(state,
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                   touching[i] = true;
+                   const NodeResponse response = Respond(i, o, g, q, x);
+                   force[i] += response.force;
+                   normal[i] += response.normal_force;
+                   r.max_penetration = std::max(r.max_penetration, -g);
+                 });
   r.nodes = static_cast<int>(std::count(touching.begin(), touching.end(), true));
   r.pressure.assign(state.NodeCount(), 0.0);
   for (int i = 0; i < state.NodeCount(); ++i) {
     r.force += force[i];
-    if (area_[i] > 0.0) r.pressure[i] = force[i].norm() / area_[i];
+    if (area_[i] > 0.0) r.pressure[i] = normal[i] / area_[i];
   }
   if (stabilization_ > 0.0)
     for (int i = 0; i < state.NodeCount(); ++i) {
@@ -91,7 +151,7 @@ ContactReport NodeContact::Report(const ShellState& state) const {
 
 std::vector<std::string> NodeContact::Penetrations(const ShellState& state, double depth) const {
   std::vector<std::string> lines;
-  ForEachContact(state, [&](int i, int o, double g, const DistanceQuery&) {
+  ForEachContact(state, [&](int i, int o, double g, const DistanceQuery&, const Eigen::Vector3d&) {
     if (-g <= depth) return;
     char text[200];
     const auto x = state.positions.row(i);

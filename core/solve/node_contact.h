@@ -6,6 +6,13 @@
 // the reference area, so the penalty is mesh independent: the force is
 // −k A g n and the tangent k A (n nᵀ + g ∇∇d).
 //
+// Coulomb friction (μ > 0), regularised: the tangential slip s of a node
+// from its anchor (where the last converged step left it, less the slip it
+// carried) gives the force −μ f_n s / √(|s|² + ε²), ε = μ f_n / (k A): a
+// stiff spring for small slip, the Coulomb limit for large, smooth in
+// between. A node loaded below the limit creeps by less than ε and stays; one
+// loaded above it slides.
+//
 // Scenes held only by contact (a sheet on a frictionless table, a strip hung
 // over a rod) have rigid motions that nothing resists; for those, weak springs
 // tie each node to where it was at the end of the last converged step
@@ -38,7 +45,8 @@ class NodeContact {
   NodeContact(const ShellModel& model,
               std::vector<NamedObstacle> obstacles,
               double penalty,
-              double stabilization);
+              double stabilization,
+              double friction = 0.0);
 
   // Adds ∂E/∂x of contact and stabilisation to `internal` (5 per node) and,
   // with `blocks`, each node's 3×3 translational tangent block (row-major).
@@ -50,7 +58,8 @@ class NodeContact {
            const Eigen::VectorXd* velocity,
            Eigen::VectorXd* rate) const;
 
-  // The stabilisation springs start again from `state` (a converged step).
+  // The stabilisation springs and the friction anchors start again from
+  // `state` (a converged step).
   void Commit(const ShellState& state);
   void SetStabilization(double per_node) { stabilization_ = per_node; }
 
@@ -62,6 +71,7 @@ class NodeContact {
   double penalty() const { return penalty_; }
   double stabilization() const { return stabilization_; }
   double half_thickness() const { return half_thickness_; }
+  double friction() const { return friction_; }
   const std::vector<double>& nodal_area() const { return area_; }
 
  private:
@@ -69,12 +79,27 @@ class NodeContact {
   template <typename F>
   void ForEachContact(const ShellState& state, F&& f) const;
 
+  // The force obstacle `o` exerts on node `i` (normal and friction), its
+  // normal part's magnitude, and the tangent −∂force/∂x (symmetric part).
+  struct NodeResponse {
+    Eigen::Vector3d force;
+    double normal_force = 0;
+    Eigen::Matrix3d stiffness;
+  };
+  Eigen::Vector3d FrictionAnchor(int i, int o) const;
+  NodeResponse Respond(
+      int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) const;
+
   std::vector<NamedObstacle> obstacles_;
   std::vector<double> area_;  // tributary reference area per node [m²]
   double penalty_;
   double stabilization_;
   double half_thickness_;
+  double friction_;
   Eigen::MatrixXd anchors_;  // node positions of the last converged step
+  // Friction anchors per node and obstacle (index i·obstacles + o); NaN
+  // where the node was not in contact at the last commit.
+  std::vector<Eigen::Vector3d> stick_;
 };
 
 // k per area for `contact.penalty: "auto"`: the membrane stiffness of the

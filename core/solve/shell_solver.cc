@@ -100,10 +100,14 @@ bool HoldsRestrainRigidMotion(const ShellModel& model, const DofMap& dofs) {
 std::unique_ptr<NodeContact> MakeContact(const Scene& scene, const ShellModel& model) {
   if (scene.obstacles.empty()) return nullptr;
   std::vector<NamedObstacle> obstacles;
-  for (const auto& o : scene.obstacles) obstacles.push_back({o.name, MakeObstacleGeometry(o, ".")});
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    obstacles.push_back(
+        {scene.obstacles[i].name,
+         MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]")});
   const double penalty =
       scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
-  auto contact = std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0);
+  const double friction = scene.contact ? scene.contact->friction : 0.0;
+  auto contact = std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0, friction);
   // A fabric that starts inside an obstacle has no meaningful first step.
   const auto inside = contact->Penetrations(model.reference, 1e-3 * model.thickness);
   if (!inside.empty()) {
