@@ -46,6 +46,7 @@ struct ResultWriter::Impl {
   StepState last;
   bool has_last = false;
   bool contact = false;  // the scene has obstacles
+  std::vector<std::string> obstacle_names;
 };
 
 ResultWriter::ResultWriter(const std::filesystem::path& directory,
@@ -68,6 +69,7 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
   if (!impl_->csv)
     throw std::runtime_error("cannot create '" + (directory / kStepsCsvFileName).string() + "'");
   impl_->contact = !scene.obstacles.empty();
+  for (const auto& o : scene.obstacles) impl_->obstacle_names.push_back(o.name);
   impl_->csv << "stage,stage_name,step,lambda,iterations,arc_length,negative_pivots";
   if (impl_->contact)
     impl_->csv << ",contact_nodes,contact_force_x_N,contact_force_y_N,contact_force_z_N,"
@@ -98,6 +100,16 @@ void ResultWriter::AddStep(const StepState& step) {
                     {"max_penetration", step.contact->max_penetration}};
     if (step.contact->max_stabilization_force > 0)
       s["contact"]["max_stabilization_force"] = step.contact->max_stabilization_force;
+  }
+  // Obstacles a stage moved: where each one is (world = R x_scene + t).
+  for (size_t o = 0; o < step.state.obstacles.size() && o < impl_->obstacle_names.size(); ++o) {
+    const ObstaclePlacement& p = step.state.obstacles[o];
+    if (p.IsIdentity()) continue;
+    json rotation = json::array();
+    for (int r = 0; r < 3; ++r)
+      rotation.push_back({p.rotation(r, 0), p.rotation(r, 1), p.rotation(r, 2)});
+    s["obstacles"][impl_->obstacle_names[o]] = {{"rotation", rotation},
+                                                {"translation", Vector(p.translation)}};
   }
   impl_->steps.push_back(std::move(s));
   auto& csv = impl_->csv;

@@ -1,5 +1,6 @@
 #include "core/io/scene_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -542,8 +543,14 @@ Stage SceneParser::ReadStage(const JsonCursor& c) {
   if (auto m = c.Find("moves")) {
     if (s.kind != StageKind::kMove) m->Fail("only a stage of kind 'move' has moves");
     for (const auto& item : m->Items()) {
-      item.ExpectObject({"gripper", "path"});
-      s.moves.push_back(Move{item["gripper"].String(), ReadPath(item["path"])});
+      item.ExpectObject({"gripper", "obstacle", "path"});
+      Move move;
+      if (item.OneOf({"gripper", "obstacle"}) == 0)
+        move.gripper = item["gripper"].String();
+      else
+        move.obstacle = item["obstacle"].String();
+      move.path = ReadPath(item["path"]);
+      s.moves.push_back(std::move(move));
     }
   }
   if (s.kind == StageKind::kMove && s.moves.empty())
@@ -578,7 +585,19 @@ void SceneParser::CheckStages(const JsonCursor& root, const Scene& scene) {
     if (stage.moves.empty()) continue;
     auto moves = c["moves"].Items();
     std::set<std::string> moved;
+    std::set<std::string> moved_obstacles;
     for (size_t m = 0; m < stage.moves.size(); ++m) {
+      if (!stage.moves[m].obstacle.empty()) {
+        const std::string& name = stage.moves[m].obstacle;
+        auto obstacle = moves[m]["obstacle"];
+        if (std::none_of(scene.obstacles.begin(), scene.obstacles.end(), [&](const Obstacle& o) {
+              return o.name == name;
+            }))
+          obstacle.Fail("no obstacle is named '" + name + "'");
+        if (!moved_obstacles.insert(name).second)
+          obstacle.Fail("obstacle '" + name + "' is moved twice in one stage");
+        continue;
+      }
       const std::string& name = stage.moves[m].gripper;
       auto gripper = moves[m]["gripper"];
       if (!gripper_exists(name)) gripper.Fail("no gripper is named '" + name + "'");

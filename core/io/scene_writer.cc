@@ -165,7 +165,9 @@ json ToJson(const Stage& s) {
   if (!s.moves.empty()) {
     j["moves"] = json::array();
     for (const auto& m : s.moves)
-      j["moves"].push_back({{"gripper", m.gripper}, {"path", ToJson(m.path)}});
+      j["moves"].push_back(m.obstacle.empty()
+                               ? json{{"gripper", m.gripper}, {"path", ToJson(m.path)}}
+                               : json{{"obstacle", m.obstacle}, {"path", ToJson(m.path)}});
   }
   return j;
 }

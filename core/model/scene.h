@@ -236,9 +236,12 @@ struct KeyframesPath {
 };
 using Path = std::variant<LinePath, ArcPath, KeyframesPath>;
 
+// What a move stage carries along a path: a gripper, or (gripper empty) an
+// obstacle — a table lowered, a rod lifted.
 struct Move {
   std::string gripper;
   Path path;
+  std::string obstacle;
   friend bool operator==(const Move&, const Move&) = default;
 };
 

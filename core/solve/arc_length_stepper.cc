@@ -21,7 +21,7 @@ ArcLengthStepper::ArcLengthStepper(EquilibriumSystem& system,
                                    double psi)
     : system_(system), loading_(loading), newton_(newton), psi_(psi) {
   // Moving grippers add no load: judge residuals against the forces present.
-  newton_.relative_to_force_level = loading.MovesGrippers();
+  newton_.relative_to_force_level = loading.MovesGrippers() || loading.MovesObstacles();
   const DofMap& dofs = system.dofs();
   translation_mask_.setZero(dofs.FreeCount());
   for (int d = 0; d < dofs.DofCount(); ++d)
@@ -37,6 +37,9 @@ Eigen::VectorXd ArcLengthStepper::AssembleWithRate(const ShellState& state, doub
   system_.Assemble(state, /*with_tangent=*/true, loading_.MovesGrippers() ? &velocity : nullptr);
   Eigen::VectorXd f0 = system_.dofs().Restrict(loading_.ExternalRate(state));
   if (loading_.MovesGrippers()) f0 -= system_.dofs().Restrict(system_.InternalForceRate());
+  if (loading_.MovesObstacles())
+    f0 -=
+        system_.dofs().Restrict(system_.ObstacleForceRate(state, loading_.ObstacleMotions(lambda)));
   return f0;
 }
 

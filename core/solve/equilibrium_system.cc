@@ -70,6 +70,13 @@ double EquilibriumSystem::Assemble(const ShellState& state,
   return energy;
 }
 
+Eigen::VectorXd EquilibriumSystem::ObstacleForceRate(
+    const ShellState& state, const std::vector<ObstacleMotion>& motions) const {
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(internal_.size());
+  if (contact_) contact_->AddObstacleRate(state, motions, rate);
+  return rate;
+}
+
 Eigen::VectorXd EquilibriumSystem::Residual(const Eigen::VectorXd& external) const {
   return dofs_.Restrict(internal_ - external);
 }

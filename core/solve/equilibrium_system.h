@@ -38,6 +38,9 @@ class EquilibriumSystem {
   // The full internal force of the last assembly (5 per node).
   const Eigen::VectorXd& InternalForce() const { return internal_; }
   const Eigen::VectorXd& InternalForceRate() const { return rate_; }
+  // ∂F_int/∂λ from obstacles moving along their paths (full, 5 per node).
+  Eigen::VectorXd ObstacleForceRate(const ShellState& state,
+                                    const std::vector<ObstacleMotion>& motions) const;
   // R = F_int − F_ext over the free DOFs, from the last assembly.
   Eigen::VectorXd Residual(const Eigen::VectorXd& external) const;
 

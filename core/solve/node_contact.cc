@@ -36,7 +36,7 @@ void NodeContact::ForEachContact(const ShellState& state, F&& f) const {
   for (int i = 0; i < state.NodeCount(); ++i) {
     const Eigen::Vector3d x = state.positions.row(i).transpose();
     for (size_t o = 0; o < obstacles_.size(); ++o) {
-      const DistanceQuery q = obstacles_[o].geometry->Query(x);
+      const DistanceQuery q = Query(state, static_cast<int>(o), x);
       const double g = q.distance - half_thickness_;
       // Touching counts (with no force): its stiffness lets a predictor see
       // the obstacle the fabric rests on. "Touching" allows for round-off in
@@ -46,15 +46,52 @@ void NodeContact::ForEachContact(const ShellState& state, F&& f) const {
   }
 }
 
-Eigen::Vector3d NodeContact::FrictionAnchor(int i, int o) const {
-  // A node that came into contact during this step sticks from where it was
-  // at the last converged step.
-  const Eigen::Vector3d& stuck = stick_[static_cast<size_t>(i) * obstacles_.size() + o];
-  return stuck.hasNaN() ? Eigen::Vector3d(anchors_.row(i).transpose()) : stuck;
+ObstaclePlacement NodeContact::PlacementOf(const ShellState& state, int o) {
+  return state.obstacles.empty() ? ObstaclePlacement{} : state.obstacles[o];
 }
 
-NodeContact::NodeResponse NodeContact::Respond(
-    int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) const {
+DistanceQuery NodeContact::Query(const ShellState& state, int o, const Eigen::Vector3d& x) const {
+  const ObstaclePlacement p = PlacementOf(state, o);
+  if (p.IsIdentity()) return obstacles_[o].geometry->Query(x);
+  DistanceQuery q = obstacles_[o].geometry->Query(p.ToScene(x));
+  q.normal = p.rotation * q.normal;
+  q.hessian = p.rotation * q.hessian * p.rotation.transpose();
+  return q;
+}
+
+Eigen::Vector3d NodeContact::FrictionAnchor(const ShellState& state, int i, int o) const {
+  // A node that came into contact during this step sticks from where it was
+  // at the last converged step. Anchors move with their obstacle.
+  const Eigen::Vector3d& stuck = stick_[static_cast<size_t>(i) * obstacles_.size() + o];
+  return stuck.hasNaN() ? Eigen::Vector3d(anchors_.row(i).transpose())
+                        : PlacementOf(state, o).ToWorld(stuck);
+}
+
+void NodeContact::AddObstacleRate(const ShellState& state,
+                                  const std::vector<ObstacleMotion>& motions,
+                                  Eigen::VectorXd& rate) const {
+  for (const auto& m : motions)
+    ForEachContact(
+        state, [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+          if (o != m.index) return;
+          // The obstacle's material point at x moves with v = ω × (x − c − d) + ḋ;
+          // then ġ = −n·v and ṅ = ω × n − ∇∇d v at the fixed node. (Friction's
+          // rate is left out, as its dependence on f_n is in the tangent.)
+          const Eigen::Vector3d v =
+              m.motion.angular_rate.cross(x - m.motion.center - m.motion.translation) +
+              m.motion.translation_rate;
+          const Eigen::Vector3d n_rate = m.motion.angular_rate.cross(q.normal) - q.hessian * v;
+          const double k = penalty_ * area_[i];
+          rate.segment<3>(kDofsPerNode * i) += k * (-q.normal.dot(v) * q.normal + g * n_rate);
+        });
+}
+
+NodeContact::NodeResponse NodeContact::Respond(const ShellState& state,
+                                               int i,
+                                               int o,
+                                               double g,
+                                               const DistanceQuery& q,
+                                               const Eigen::Vector3d& x) const {
   const double k = penalty_ * area_[i];
   const Eigen::Vector3d& n = q.normal;
   NodeResponse r;
@@ -62,7 +99,7 @@ NodeContact::NodeResponse NodeContact::Respond(
   r.force = r.normal_force * n;
   r.stiffness = k * (n * n.transpose() + g * q.hessian);
   if (friction_ <= 0.0 || r.normal_force <= 0.0) return r;
-  const Eigen::Vector3d anchor = FrictionAnchor(i, o);
+  const Eigen::Vector3d anchor = FrictionAnchor(state, i, o);
   const Eigen::Matrix3d tangential = Eigen::Matrix3d::Identity() - n * n.transpose();
   const Eigen::Vector3d slip = tangential * (x - anchor);
   // Smooth Coulomb law f_t = −μ f_n s / √(|s|² + ε²) with ε = μ f_n / (k A):
@@ -87,7 +124,7 @@ void NodeContact::Add(const ShellState& state,
   if (blocks) blocks->assign(n, Eigen::Matrix3d::Zero());
   ForEachContact(state,
                  [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
-                   const NodeResponse r = Respond(i, o, g, q, x);
+                   const NodeResponse r = Respond(state, i, o, g, q, x);
                    internal.segment<3>(kDofsPerNode * i) -= r.force;
                    if (blocks) (*blocks)[i] += r.stiffness;
                    if (velocity && rate)
@@ -112,10 +149,10 @@ void NodeContact::Commit(const ShellState& state) {
                    // The slip carries over, so a node whose friction balances its load
                    // stays put in the next step: the anchor keeps its offset from x in
                    // the tangent plane.
-                   const Eigen::Vector3d anchor = FrictionAnchor(i, o);
+                   const Eigen::Vector3d anchor = FrictionAnchor(state, i, o);
                    const Eigen::Matrix3d tangential =
                        Eigen::Matrix3d::Identity() - q.normal * q.normal.transpose();
-                   next[at] = x - tangential * (x - anchor);
+                   next[at] = PlacementOf(state, o).ToScene(x - tangential * (x - anchor));
                  });
   stick_ = std::move(next);
 }
@@ -128,7 +165,7 @@ ContactReport NodeContact::Report(const ShellState& state) const {
   ForEachContact(state,
                  [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
                    touching[i] = true;
-                   const NodeResponse response = Respond(i, o, g, q, x);
+                   const NodeResponse response = Respond(state, i, o, g, q, x);
                    force[i] += response.force;
                    normal[i] += response.normal_force;
                    r.max_penetration = std::max(r.max_penetration, -g);

@@ -29,6 +29,7 @@
 #include "core/model/obstacle_geometry.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/shell_state.h"
+#include "core/solve/stage_loading.h"
 #include "core/solve/step_state.h"
 
 namespace drape {
@@ -63,6 +64,11 @@ class NodeContact {
   void Commit(const ShellState& state);
   void SetStabilization(double per_node) { stabilization_ = per_node; }
 
+  // Adds ∂(∂E/∂x)/∂λ of contact at fixed nodes while obstacles move.
+  void AddObstacleRate(const ShellState& state,
+                       const std::vector<ObstacleMotion>& motions,
+                       Eigen::VectorXd& rate) const;
+
   ContactReport Report(const ShellState& state) const;
   // Nodes deeper than `depth` inside an obstacle: "node N is X mm inside
   // 'table'" lines, for the start of a run.
@@ -86,9 +92,16 @@ class NodeContact {
     double normal_force = 0;
     Eigen::Matrix3d stiffness;
   };
-  Eigen::Vector3d FrictionAnchor(int i, int o) const;
-  NodeResponse Respond(
-      int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) const;
+  static ObstaclePlacement PlacementOf(const ShellState& state, int o);
+  // Obstacle o's distance at world x, with it where `state` has placed it.
+  DistanceQuery Query(const ShellState& state, int o, const Eigen::Vector3d& x) const;
+  Eigen::Vector3d FrictionAnchor(const ShellState& state, int i, int o) const;
+  NodeResponse Respond(const ShellState& state,
+                       int i,
+                       int o,
+                       double g,
+                       const DistanceQuery& q,
+                       const Eigen::Vector3d& x) const;
 
   std::vector<NamedObstacle> obstacles_;
   std::vector<double> area_;  // tributary reference area per node [m²]

@@ -519,7 +519,12 @@ bool ShellSolver::Impl::RunStage(int index) {
     return false;
   }
   UseDofs(std::move(stage_dofs));
-  const StageLoading loading(model, spec, Holds(spec), weight_done, loads_done);
+  std::vector<MovedObstacle> moved;
+  for (const auto& move : spec.moves)
+    for (size_t o = 0; o < scene.obstacles.size(); ++o)
+      if (!move.obstacle.empty() && scene.obstacles[o].name == move.obstacle)
+        moved.push_back({static_cast<int>(o), &move.path, state.obstacles.at(o)});
+  const StageLoading loading(model, spec, Holds(spec), weight_done, loads_done, std::move(moved));
 
   bool ok;
   if (spec.kind == StageKind::kHold)
@@ -579,6 +584,7 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.threads_used = 1;
 #endif
   m.state = m.model.reference;
+  m.state.obstacles.assign(m.scene.obstacles.size(), ObstaclePlacement{});
   if (m.contact) {
     m.contact->Commit(m.state);
     m.summary.contact_penalty = m.contact->penalty();

@@ -10,9 +10,24 @@ namespace drape {
 
 constexpr int kDofsPerNode = 5;  // Δu (3) and the rotation increment (a, b) in the tangent basis
 
+// Where a rigid obstacle is: world x = R x_scene + t, x_scene a point of the
+// obstacle as the scene gives it. Stages may carry obstacles along paths.
+struct ObstaclePlacement {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+
+  Eigen::Vector3d ToWorld(const Eigen::Vector3d& x) const { return rotation * x + translation; }
+  Eigen::Vector3d ToScene(const Eigen::Vector3d& x) const {
+    return rotation.transpose() * (x - translation);
+  }
+  bool IsIdentity() const { return rotation.isIdentity(0.0) && translation.isZero(0.0); }
+};
+
 struct ShellState {
   Eigen::Matrix<double, Eigen::Dynamic, 3> positions;  // #nodes × 3 [m]
   std::vector<Eigen::Matrix3d> rotations;              // Λ per node
+  // One per scene obstacle (empty: every obstacle where the scene put it).
+  std::vector<ObstaclePlacement> obstacles;
 
   int NodeCount() const { return static_cast<int>(positions.rows()); }
   Eigen::Vector3d Director(int node) const { return rotations[node].col(2); }

@@ -6,10 +6,12 @@ StageLoading::StageLoading(const ShellModel& model,
                            const Stage& stage,
                            const std::vector<HeldGripper>& grippers,
                            double weight_before,
-                           double loads_before)
+                           double loads_before,
+                           std::vector<MovedObstacle> obstacles)
     : model_(model),
       kind_(stage.kind),
       grippers_(grippers),
+      obstacles_(std::move(obstacles)),
       weight_before_(weight_before),
       loads_before_(loads_before) {
   for (const auto& g : grippers_)
@@ -24,7 +26,20 @@ double StageLoading::LoadFactor(double lambda) const {
   return kind_ == StageKind::kLoad ? lambda : loads_before_;
 }
 
+std::vector<ObstacleMotion> StageLoading::ObstacleMotions(double lambda) const {
+  std::vector<ObstacleMotion> motions;
+  for (const auto& o : obstacles_) motions.push_back({o.index, MotionAt(*o.path, lambda)});
+  return motions;
+}
+
 void StageLoading::Place(double lambda, ShellState& state) const {
+  for (const auto& o : obstacles_) {
+    // world = M(start(x)): R = R_M R₀, t = R_M (t₀ − c) + c + d.
+    const RigidMotion m = MotionAt(*o.path, lambda);
+    ObstaclePlacement& p = state.obstacles.at(o.index);
+    p.rotation = m.rotation * o.start.rotation;
+    p.translation = m.Apply(o.start.translation);
+  }
   for (const auto& g : grippers_) {
     if (!g.path) continue;
     const RigidMotion motion = MotionAt(*g.path, lambda);

@@ -24,6 +24,19 @@ struct HeldGripper {
   std::vector<Eigen::Matrix3d> start_rotations;
 };
 
+// An obstacle a stage carries along a path, from where the stage found it.
+struct MovedObstacle {
+  int index = -1;  // in the scene's obstacles
+  const Path* path = nullptr;
+  ObstaclePlacement start;
+};
+
+// An obstacle's motion at λ: its placement and velocity field.
+struct ObstacleMotion {
+  int index = -1;
+  RigidMotion motion;  // applied to the placement the stage started from
+};
+
 class StageLoading {
  public:
   // `weight_before` and `loads_before`: the factors reached by earlier stages.
@@ -31,10 +44,15 @@ class StageLoading {
                const Stage& stage,
                const std::vector<HeldGripper>& grippers,
                double weight_before,
-               double loads_before);
+               double loads_before,
+               std::vector<MovedObstacle> obstacles = {});
 
-  // Puts the prescribed nodes where λ says (positions; rotations too for clamps).
+  // Puts the prescribed nodes where λ says (positions; rotations too for
+  // clamps), and the moving obstacles.
   void Place(double lambda, ShellState& state) const;
+  // The moving obstacles' motions at λ (their velocity fields make the
+  // λ-rate of the contact force).
+  std::vector<ObstacleMotion> ObstacleMotions(double lambda) const;
   // F_ext at λ, full (5 per node); moments act in the state's nodal bases.
   Eigen::VectorXd External(double lambda, const ShellState& state) const;
   // ∂F_ext/∂λ, full.
@@ -46,6 +64,7 @@ class StageLoading {
   double PrescribedSpeed(double lambda, const ShellState& state) const;
 
   bool MovesGrippers() const { return moving_; }
+  bool MovesObstacles() const { return !obstacles_.empty(); }
   double WeightFactor(double lambda) const;
   double LoadFactor(double lambda) const;
 
@@ -55,6 +74,7 @@ class StageLoading {
   const ShellModel& model_;
   StageKind kind_;
   std::vector<HeldGripper> grippers_;
+  std::vector<MovedObstacle> obstacles_;
   double weight_before_, loads_before_;
   bool moving_ = false;
 };

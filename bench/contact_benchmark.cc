@@ -1,0 +1,80 @@
+// Contact's cost (issue 6):
+//  - the paper's rod drape (20 × 20, linear bending) and diagonal fold
+//    (20 × 20, linear bending) end to end (targets < 0.5 s and < 1 s);
+//  - one assembly of the internal force and tangent of an n × n sheet lying
+//    on a table: without obstacles (contact code never runs), with the table
+//    far below (every node queried, none in contact) and with every node in
+//    contact — the price of contact per Newton iteration.
+// Results and the machine are in docs/performance.md.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <string>
+
+#include "core/io/scene_reader.h"
+#include "core/solve/dof_map.h"
+#include "core/solve/equilibrium_system.h"
+#include "core/solve/node_contact.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/shell_solver.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+void BM_Scene(benchmark::State& bench, const char* file) {
+  const Scene scene = ReadScene(test::ScenesDir() / file);
+  SolveSummary summary;
+  for (auto _ : bench) {
+    ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+    summary = solver.Solve({});
+  }
+  if (!summary.IsComplete()) bench.SkipWithError(summary.message.c_str());
+  bench.counters["steps"] = summary.steps;
+  bench.counters["iterations"] = summary.iterations;
+  bench.counters["factorization_share"] = summary.factorization_s / summary.total_s;
+}
+BENCHMARK_CAPTURE(BM_Scene, rod_drape, "rod-drape-linear.json")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_Scene, diagonal_fold, "diagonal-fold-linear.json")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->UseRealTime();
+
+enum class Table { kNone, kFarBelow, kTouching };
+
+// Argument (n, table): the sheet's reference state, its nodes h/2 above the
+// table when touching (every node in contact with zero gap: the full contact
+// tangent is assembled).
+void BM_AssembleOnTable(benchmark::State& bench) {
+  const int n = static_cast<int>(bench.range(0));
+  const auto table = static_cast<Table>(bench.range(1));
+  Scene scene = ReadScene(test::ScenesDir() / "block-drape.json");
+  scene.fabric.mesh.elements = std::array<int, 2>{n, n};
+  const ShellModel model = BuildShellModel(scene);
+  std::unique_ptr<NodeContact> contact;
+  if (table != Table::kNone) {
+    const double below = table == Table::kTouching ? 0.5 * model.thickness : 1.0;
+    std::vector<NamedObstacle> obstacles;
+    obstacles.push_back(
+        {"table",
+         MakeObstacleGeometry(Obstacle{"table", PlaneShape{{0, 0, -below}, {0, 0, 1}}}, ".")});
+    contact = std::make_unique<NodeContact>(model, std::move(obstacles), AutoPenalty(model), 0.0);
+  }
+  DofMap dofs(model.NodeCount());
+  for (const auto& held : model.supports)
+    for (int node : held.nodes) dofs.FixNode(node, held.fixity);
+  EquilibriumSystem system(model, dofs, contact.get());
+  for (auto _ : bench) benchmark::DoNotOptimize(system.Assemble(model.reference, true));
+  if (contact) bench.counters["nodes_in_contact"] = contact->Report(model.reference).nodes;
+}
+BENCHMARK(BM_AssembleOnTable)
+    ->ArgNames({"n", "table"})
+    ->ArgsProduct({{20, 100}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace drape
