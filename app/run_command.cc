@@ -41,16 +41,24 @@ class ProgressLine {
 
   void Show(const StepState& s, int stability_changes) {
     if (!enabled_) return;
-    char line[200];
+    char contact[80] = "";
+    if (s.contact)
+      std::snprintf(contact,
+                    sizeof contact,
+                    "  contact %d nodes, %.3g mm deep",
+                    s.contact->nodes,
+                    1e3 * s.contact->max_penetration);
+    char line[300];
     std::snprintf(line,
                   sizeof line,
-                  "\r  stage %-8s step %5d  lambda %.6f  iterations %2d  pivots- %d%s  %7.1f s ",
+                  "\r  stage %-8s step %5d  lambda %.6f  iterations %2d  pivots- %d%s%s  %7.1f s ",
                   s.stage_name.c_str(),
                   s.step,
                   s.lambda,
                   s.iterations,
                   s.negative_pivots,
                   stability_changes ? " (stability changed)" : "",
+                  contact,
                   s.elapsed_s);
     std::fputs(line, stderr);
     shown_ = true;
