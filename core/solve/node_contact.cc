@@ -24,7 +24,8 @@ NodeContact::NodeContact(const ShellModel& model,
       friction_(friction),
       anchors_(model.reference.positions),
       stick_(static_cast<size_t>(model.NodeCount()) * obstacles_.size(),
-             Eigen::Vector3d::Constant(std::nan(""))) {
+             Eigen::Vector3d::Constant(std::nan(""))),
+      multiplier_(static_cast<size_t>(model.NodeCount()) * obstacles_.size(), 0.0) {
   // The consistent share ∫ N_I dA, as for the self-weight.
   for (int e = 0; e < model.mesh.ElementCount(); ++e)
     for (const auto& gp : model.elements[e].gauss)
@@ -40,8 +41,11 @@ void NodeContact::ForEachContact(const ShellState& state, F&& f) const {
       const double g = q.distance - half_thickness_;
       // Touching counts (with no force): its stiffness lets a predictor see
       // the obstacle the fabric rests on. "Touching" allows for round-off in
-      // the distance of a node placed exactly on a curved surface.
-      if (g <= kTouching * half_thickness_) f(i, static_cast<int>(o), std::min(g, 0.0), q, x);
+      // the distance of a node placed exactly on a curved surface. A node
+      // with a multiplier is in contact while it still pushes.
+      const double m = multiplier_[static_cast<size_t>(i) * obstacles_.size() + o];
+      if (g <= kTouching * half_thickness_ || m - penalty_ * area_[i] * g > 0.0)
+        f(i, static_cast<int>(o), g, q, x);
     }
   }
 }
@@ -82,7 +86,9 @@ void NodeContact::AddObstacleRate(const ShellState& state,
               m.motion.translation_rate;
           const Eigen::Vector3d n_rate = m.motion.angular_rate.cross(q.normal) - q.hessian * v;
           const double k = penalty_ * area_[i];
-          rate.segment<3>(kDofsPerNode * i) += k * (-q.normal.dot(v) * q.normal + g * n_rate);
+          const double f_n =
+              std::max(0.0, multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] - k * g);
+          rate.segment<3>(kDofsPerNode * i) -= k * q.normal.dot(v) * q.normal + f_n * n_rate;
         });
 }
 
@@ -95,9 +101,12 @@ NodeContact::NodeResponse NodeContact::Respond(const ShellState& state,
   const double k = penalty_ * area_[i];
   const Eigen::Vector3d& n = q.normal;
   NodeResponse r;
-  r.normal_force = -k * g;
+  // f_n = m − k A g (m: the augmented-Lagrangian multiplier), and
+  // −∂(f_n n)/∂x = k A n nᵀ − f_n ∇∇d.
+  r.normal_force =
+      std::max(0.0, multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] - k * g);
   r.force = r.normal_force * n;
-  r.stiffness = k * (n * n.transpose() + g * q.hessian);
+  r.stiffness = k * n * n.transpose() - r.normal_force * q.hessian;
   if (friction_ <= 0.0 || r.normal_force <= 0.0) return r;
   const Eigen::Vector3d anchor = FrictionAnchor(state, i, o);
   const Eigen::Matrix3d tangential = Eigen::Matrix3d::Identity() - n * n.transpose();
@@ -139,12 +148,29 @@ void NodeContact::Add(const ShellState& state,
   }
 }
 
+void NodeContact::Augment(const ShellState& state) {
+  ForEachContact(state,
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                   multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] =
+                       Respond(state, i, o, g, q, x).normal_force;
+                 });
+}
+
 void NodeContact::Commit(const ShellState& state) {
   anchors_ = state.positions;
+  // Multipliers stay with the nodes that still push (no jump in force from
+  // one step to the next); those that let go start again from zero.
+  std::vector<double> kept(multiplier_.size(), 0.0);
+  ForEachContact(state,
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                   const size_t at = static_cast<size_t>(i) * obstacles_.size() + o;
+                   if (Respond(state, i, o, g, q, x).normal_force > 0.0) kept[at] = multiplier_[at];
+                 });
+  multiplier_ = std::move(kept);
   if (friction_ <= 0.0) return;
   std::vector<Eigen::Vector3d> next(stick_.size(), Eigen::Vector3d::Constant(std::nan("")));
   ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                 [&](int i, int o, double, const DistanceQuery& q, const Eigen::Vector3d& x) {
                    const size_t at = static_cast<size_t>(i) * obstacles_.size() + o;
                    // The slip carries over, so a node whose friction balances its load
                    // stays put in the next step: the anchor keeps its offset from x in
@@ -168,7 +194,7 @@ ContactReport NodeContact::Report(const ShellState& state) const {
                    const NodeResponse response = Respond(state, i, o, g, q, x);
                    force[i] += response.force;
                    normal[i] += response.normal_force;
-                   r.max_penetration = std::max(r.max_penetration, -g);
+                   r.max_penetration = std::max(r.max_penetration, std::max(-g, 0.0));
                  });
   r.nodes = static_cast<int>(std::count(touching.begin(), touching.end(), true));
   r.pressure.assign(state.NodeCount(), 0.0);
@@ -187,7 +213,7 @@ ContactReport NodeContact::Report(const ShellState& state) const {
 }
 
 std::vector<std::string> NodeContact::Penetrations(const ShellState& state, double depth) const {
-  std::vector<std::string> lines;
+  std::vector<std::pair<double, std::string>> found;
   ForEachContact(state, [&](int i, int o, double g, const DistanceQuery&, const Eigen::Vector3d&) {
     if (-g <= depth) return;
     char text[200];
@@ -201,8 +227,12 @@ std::vector<std::string> NodeContact::Penetrations(const ShellState& state, doub
                   x(2),
                   -g * 1e3,
                   obstacles_[o].name.c_str());
-    lines.push_back(text);
+    found.emplace_back(-g, text);
   });
+  std::stable_sort(
+      found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::string> lines;
+  for (auto& f : found) lines.push_back(std::move(f.second));
   return lines;
 }
 

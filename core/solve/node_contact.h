@@ -4,7 +4,9 @@
 // fabric's surface is half a thickness from its midsurface). For g < 0 the
 // energy is ½ k A g², with k the penalty per area and A the node's share of
 // the reference area, so the penalty is mesh independent: the force is
-// −k A g n and the tangent k A (n nᵀ + g ∇∇d).
+// −k A g n and the tangent k A (n nᵀ + g ∇∇d). With an augmented-Lagrangian
+// multiplier m the normal force is f_n = m − k A g (≥ 0), and the tangent
+// k A n nᵀ − f_n ∇∇d.
 //
 // Coulomb friction (μ > 0), regularised: the tangential slip s of a node
 // from its anchor (where the last converged step left it, less the slip it
@@ -64,14 +66,21 @@ class NodeContact {
   void Commit(const ShellState& state);
   void SetStabilization(double per_node) { stabilization_ = per_node; }
 
+  // Augmented Lagrangian (Uzawa): each node's multiplier takes its present
+  // normal force, so the next equilibrium needs that much less penetration.
+  // Repeated, the penetration falls geometrically without a stiffer penalty.
+  void Augment(const ShellState& state);
+  const std::vector<double>& multipliers() const { return multiplier_; }
+  void SetMultipliers(std::vector<double> m) { multiplier_ = std::move(m); }
+
   // Adds ∂(∂E/∂x)/∂λ of contact at fixed nodes while obstacles move.
   void AddObstacleRate(const ShellState& state,
                        const std::vector<ObstacleMotion>& motions,
                        Eigen::VectorXd& rate) const;
 
   ContactReport Report(const ShellState& state) const;
-  // Nodes deeper than `depth` inside an obstacle: "node N is X mm inside
-  // 'table'" lines, for the start of a run.
+  // Nodes deeper than `depth` inside an obstacle, deepest first: "node N is
+  // X mm inside 'table'" lines, for the start of a run.
   std::vector<std::string> Penetrations(const ShellState& state, double depth) const;
 
   double penalty() const { return penalty_; }
@@ -113,10 +122,13 @@ class NodeContact {
   // Friction anchors per node and obstacle (index i·obstacles + o); NaN
   // where the node was not in contact at the last commit.
   std::vector<Eigen::Vector3d> stick_;
+  // Augmented-Lagrangian normal force per node and obstacle [N] (same index).
+  std::vector<double> multiplier_;
 };
 
 // k per area for `contact.penalty: "auto"`: the membrane stiffness of the
-// section over the square of the mean element size, E h / ℓ² [N/m³]. A node
+// section over the square of the mean element size, E h / ((1 − ν²) ℓ²)
+// [N/m³]. A node
 // then pushes into an obstacle about as hard as it pulls on its neighbours,
 // so the penetration under a load p is p ℓ² / (E h) while the tangent keeps
 // the conditioning it had without contact.

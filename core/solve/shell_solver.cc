@@ -25,6 +25,8 @@ using Clock = std::chrono::steady_clock;
 
 constexpr double kStabilization = 1e-8;  // of the membrane stiffness, per node
 constexpr int kMaxSettlePasses = 5;
+constexpr double kPenetrationTolerance = 0.005;  // of the thickness
+constexpr int kMaxAugmentations = 8;
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -126,7 +128,8 @@ struct ShellSolver::Impl {
         options(o),
         model(std::move(m)),
         released(model.grippers.size(), false),
-        contact(MakeContact(scene, model)) {}
+        contact(MakeContact(scene, model)),
+        augment_contact(contact && !(scene.contact && scene.contact->penalty)) {}
 
   DofMap StageDofs() const;
   void UseDofs(DofMap stage_dofs);
@@ -154,6 +157,9 @@ struct ShellSolver::Impl {
             double lambda,
             const StageLoading& loading,
             const ContinuationStep& step);
+  // Augmented-Lagrangian passes at a converged step until the penetration is
+  // within kPenetrationTolerance of the thickness (or kMaxAugmentations).
+  void Augment(double lambda, const StageLoading& loading, ContinuationStep& step);
   void Stop(Termination t, std::string message) {
     summary.termination = t;
     summary.message = std::move(message);
@@ -165,6 +171,9 @@ struct ShellSolver::Impl {
   std::vector<bool> released;            // per gripper
   std::unique_ptr<NodeContact> contact;  // null without obstacles
   double last_stabilization_force = 0;   // of the last converged step [N]
+  // "auto" penalty: penetration held to kPenetrationTolerance by augmented-
+  // Lagrangian passes. A penalty the user set is used as given.
+  bool augment_contact = false;
   // The DOF map of the current stage, and the system built on it.
   std::unique_ptr<DofMap> dofs;
   std::unique_ptr<EquilibriumSystem> system;
@@ -232,11 +241,44 @@ NewtonSettings ShellSolver::Impl::Newton() const {
   return n;
 }
 
+void ShellSolver::Impl::Augment(double lambda,
+                                const StageLoading& loading,
+                                ContinuationStep& step) {
+  const double allowed = kPenetrationTolerance * model.thickness;
+  for (int pass = 0; pass < kMaxAugmentations; ++pass) {
+    if (contact->Report(state).max_penetration <= allowed) return;
+    const ShellState saved = state;
+    const std::vector<double> multipliers = contact->multipliers();
+    contact->Augment(state);
+    NewtonSettings settings = Newton();
+    settings.relative_to_force_level = true;  // no load is added
+    const NewtonOutcome newton = SolveEquilibrium(
+        *system,
+        [&](const ShellState& s) { return loading.External(lambda, s); },
+        settings,
+        state,
+        cancel);
+    if (newton.status != NewtonOutcome::Status::kConverged) {
+      // Keep the penalty solution; the report shows its penetration.
+      state = saved;
+      contact->SetMultipliers(multipliers);
+      return;
+    }
+    step.iterations += newton.iterations;
+    step.residuals.insert(step.residuals.end(), newton.residuals.begin(), newton.residuals.end());
+    step.negative_pivots = newton.negative_pivots;
+    ++summary.augmentations;
+    summary.iterations += newton.iterations;
+  }
+}
+
 bool ShellSolver::Impl::Emit(int stage_index,
                              int stage_step,
                              double lambda,
                              const StageLoading& loading,
-                             const ContinuationStep& result) {
+                             const ContinuationStep& converged) {
+  ContinuationStep result = converged;
+  if (contact && augment_contact) Augment(lambda, loading, result);
   StepState step;
   step.stage = stage_index;
   step.stage_name = scene.stages[stage_index].name;

@@ -65,6 +65,7 @@ struct SolveSummary {
   double contact_penalty = 0;          // k per area used [N/m³]
   double max_penetration = 0;          // over every converged step [m]
   double max_stabilization_force = 0;  // largest nodal spring force, any step [N]
+  int augmentations = 0;               // augmented-Lagrangian passes (each one Newton solve)
 
   double total_s = 0;
   double assembly_s = 0;

@@ -46,7 +46,10 @@ TEST(SceneReader, ReadsEveryExampleScene) {
     SCOPED_TRACE(file.string());
     Scene scene = ReadScene(file);
     EXPECT_FALSE(scene.name.empty());
-    EXPECT_NE(scene.description.find("Eischen"), std::string::npos) << "cites the paper";
+    // Each says where it comes from and how to run it.
+    EXPECT_GT(scene.description.size(), 100u);
+    EXPECT_NE(scene.description.find("Run: drape run resources/scenes/" + file.filename().string()),
+              std::string::npos);
     EXPECT_FALSE(scene.stages.empty());
   }
 }
