@@ -8,6 +8,9 @@ namespace drape {
 namespace {
 
 constexpr double kTouching = 1e-9;  // of the half thickness
+// Slip kept from step to step, in units of the regularisation ε: 3ε gives
+// 3/√10 = 95 % of μ f_n.
+constexpr double kCarriedSlip = 3.0;
 
 }  // namespace
 
@@ -170,15 +173,21 @@ void NodeContact::Commit(const ShellState& state) {
   if (friction_ <= 0.0) return;
   std::vector<Eigen::Vector3d> next(stick_.size(), Eigen::Vector3d::Constant(std::nan("")));
   ForEachContact(state,
-                 [&](int i, int o, double, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
                    const size_t at = static_cast<size_t>(i) * obstacles_.size() + o;
                    // The slip carries over, so a node whose friction balances its load
-                   // stays put in the next step: the anchor keeps its offset from x in
-                   // the tangent plane.
+                   // stays put in the next step; but only its elastic part, at most
+                   // kCarriedSlip ε (95 % of the Coulomb force): a node that slid
+                   // drags its anchor along, and its friction turns round once it
+                   // moves back by about that much, as Coulomb friction does.
                    const Eigen::Vector3d anchor = FrictionAnchor(state, i, o);
                    const Eigen::Matrix3d tangential =
                        Eigen::Matrix3d::Identity() - q.normal * q.normal.transpose();
-                   next[at] = PlacementOf(state, o).ToScene(x - tangential * (x - anchor));
+                   Eigen::Vector3d slip = tangential * (x - anchor);
+                   const double f_n = Respond(state, i, o, g, q, x).normal_force;
+                   const double carried = kCarriedSlip * friction_ * f_n / (penalty_ * area_[i]);
+                   if (slip.norm() > carried) slip *= carried / slip.norm();
+                   next[at] = PlacementOf(state, o).ToScene(x - slip);
                  });
   stick_ = std::move(next);
 }

@@ -13,7 +13,9 @@
 // carried) gives the force −μ f_n s / √(|s|² + ε²), ε = μ f_n / (k A): a
 // stiff spring for small slip, the Coulomb limit for large, smooth in
 // between. A node loaded below the limit creeps by less than ε and stays; one
-// loaded above it slides.
+// loaded above it slides. Only the elastic part of the slip (at most 3ε)
+// carries over to the next step, so a node that slid drags its anchor along
+// and its friction turns round when it moves back.
 //
 // Scenes held only by contact (a sheet on a frictionless table, a strip hung
 // over a rod) have rigid motions that nothing resists; for those, weak springs
