@@ -96,7 +96,19 @@ double EquilibriumSystem::ForceLevel(const Eigen::VectorXd& external) const {
 
 FactorizationInfo EquilibriumSystem::Factorize() {
   const auto start = std::chrono::steady_clock::now();
+  // A step's predictor starts from the state the last corrector converged
+  // at, whose tangent was factorised for its stability indicator: the same
+  // matrix need not be factorised twice.
+  const Eigen::Map<const Eigen::VectorXd> values(tangent_.valuePtr(), tangent_.nonZeros());
+  if (factorized_valid_ && factorized_values_.size() == values.size() &&
+      std::equal(values.begin(), values.end(), factorized_values_.begin())) {
+    ++timers_.reused_factorizations;
+    return factorized_info_;
+  }
   FactorizationInfo info = cholesky_.Factorize(tangent_);
+  factorized_values_ = values;
+  factorized_info_ = info;
+  factorized_valid_ = true;
   timers_.factorization_s += SecondsSince(start);
   ++timers_.factorizations;
   if (!info.positive_definite) ++timers_.indefinite_factorizations;

@@ -19,6 +19,7 @@ struct SystemTimers {
   double solve_s = 0;
   int factorizations = 0;
   int indefinite_factorizations = 0;
+  int reused_factorizations = 0;  // asked for a matrix already factorised
 };
 
 class EquilibriumSystem {
@@ -72,6 +73,10 @@ class EquilibriumSystem {
   Eigen::VectorXd internal_;
   Eigen::VectorXd rate_;
   SparseCholesky cholesky_;
+  // The values of the matrix the factor holds, to skip refactorising it.
+  Eigen::VectorXd factorized_values_;
+  FactorizationInfo factorized_info_;
+  bool factorized_valid_ = false;
   SystemTimers timers_;
 };
 
