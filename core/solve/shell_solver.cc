@@ -167,6 +167,7 @@ void ShellSolver::Impl::UseDofs(DofMap stage_dofs) {
     retired_timers.solve_s += t.solve_s;
     retired_timers.factorizations += t.factorizations;
     retired_timers.indefinite_factorizations += t.indefinite_factorizations;
+    retired_timers.reused_factorizations += t.reused_factorizations;
   }
   system.reset();
   dofs = std::make_unique<DofMap>(std::move(stage_dofs));
@@ -616,6 +617,7 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
     t.solve_s += now.solve_s;
     t.factorizations += now.factorizations;
     t.indefinite_factorizations += now.indefinite_factorizations;
+    t.reused_factorizations += now.reused_factorizations;
   }
   m.summary.free_dofs = m.dofs ? m.dofs->FreeCount() : -1;
   m.summary.assembly_s = t.assembly_s;
@@ -623,6 +625,7 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.solve_s = t.solve_s;
   m.summary.factorizations = t.factorizations;
   m.summary.indefinite_factorizations = t.indefinite_factorizations;
+  m.summary.reused_factorizations = t.reused_factorizations;
   m.summary.total_s = SecondsSince(m.start);
   return m.summary;
 }

@@ -85,13 +85,14 @@ std::string SolveSummary::FullReport() const {
   }
   std::snprintf(row,
                 sizeof row,
-                "  time: total %.3f s, assembly %.3f s, factorisation %.3f s (%d, %d indefinite), "
-                "solve %.3f s, observers %.3f s\n",
+                "  time: total %.3f s, assembly %.3f s, factorisation %.3f s (%d, %d indefinite, "
+                "%d reused), solve %.3f s, observers %.3f s\n",
                 total_s,
                 assembly_s,
                 factorization_s,
                 factorizations,
                 indefinite_factorizations,
+                reused_factorizations,
                 solve_s,
                 observer_s);
   s << row;

@@ -57,6 +57,7 @@ struct SolveSummary {
   int step_cuts = 0;
   int factorizations = 0;
   int indefinite_factorizations = 0;  // tangents that were not positive definite
+  int reused_factorizations = 0;      // requests for a tangent already factorised
   std::vector<StageSummary> stages;
   std::vector<StabilityEvent> stability_events;
   std::vector<std::string> notes;  // what was used instead of what was asked, and why
