@@ -188,7 +188,7 @@ Scene RoofScene(const RoofSpec& spec) {
   } else {
     scene.grippers.push_back({"centre", centre, Fixity::kPosition});
     stage.kind = StageKind::kMove;
-    stage.moves.push_back({"centre", LinePath{{0.0, 0.0, -spec.push}}});
+    stage.moves.push_back({"centre", LinePath{{0.0, 0.0, -spec.push}}, {}});
   }
   scene.stages.push_back(stage);
   scene.probes.push_back({"C", {0.0, 0.0}});

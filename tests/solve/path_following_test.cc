@@ -119,7 +119,7 @@ TEST(PathFollowing, GripperTurnedTwoFullTurnsReturnsTheStripToItsStart) {
   turn.name = "turn";
   turn.kind = StageKind::kMove;
   turn.initial_increment = 0.01;
-  turn.moves.push_back({"root", ArcPath{{0, 0, 0}, {0, 1, 0}, 720.0}});
+  turn.moves.push_back({"root", ArcPath{{0, 0, 0}, {0, 1, 0}, 720.0}, {}});
   scene.stages.push_back(turn);
   Steps run = Solve(scene);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();

@@ -174,7 +174,7 @@ StripRun RunStrip(const test::StripSpec& spec,
   stage.kind = StageKind::kMove;
   stage.initial_increment = initial_increment;
   stage.control = StepControl::kArcLength;
-  stage.moves.push_back({"end", LinePath{{-shortening * spec.length, 0.0, 0.0}}});
+  stage.moves.push_back({"end", LinePath{{-shortening * spec.length, 0.0, 0.0}}, {}});
   scene.stages.push_back(stage);
   scene.solver.acceleration = acceleration;
   // The default ‖R‖/‖R₀‖ ≤ 1e-5 is relative to the step's Δλ·‖F₀‖, and for a
