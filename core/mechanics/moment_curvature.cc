@@ -96,9 +96,7 @@ struct CubicPiece {
   double anchor = 0, w = 0, a = 0, b = 0, c = 0, d = 0;
   double Moment(double s) const { return a + s * (b + s * (c + s * d)); }
   double Stiffness(double s) const { return b + s * (2 * c + 3 * d * s); }
-  double Energy(double s) const {
-    return w + s * (a + s * (b / 2 + s * (c / 3 + s * d / 4)));
-  }
+  double Energy(double s) const { return w + s * (a + s * (b / 2 + s * (c / 3 + s * d / 4))); }
 };
 
 // Fritsch–Carlson tangents for strictly increasing x.
@@ -145,12 +143,11 @@ class CurveLaw final : public MomentCurvatureLaw {
  public:
   // x strictly increasing and containing 0 with y = 0 there; odd: x[0] = 0 and
   // the law is evaluated as sign(K) M(|K|).
-  CurveLaw(std::vector<double> x, std::vector<double> y, bool odd)
-      : x_(std::move(x)), odd_(odd) {
+  CurveLaw(std::vector<double> x, std::vector<double> y, bool odd) : x_(std::move(x)), odd_(odd) {
     const std::size_t n = x_.size();
     const std::vector<double> m = MonotoneTangents(x_, y);
-    const std::size_t zero = static_cast<std::size_t>(
-        std::find(x_.begin(), x_.end(), 0.0) - x_.begin());
+    const std::size_t zero =
+        static_cast<std::size_t>(std::find(x_.begin(), x_.end(), 0.0) - x_.begin());
 
     // Energies at the knots, accumulated outwards from K = 0 with the exact
     // integral of each Hermite cubic: h (yᵢ + yᵢ₊₁)/2 + h² (mᵢ − mᵢ₊₁)/12.
@@ -209,10 +206,12 @@ class CurveLaw final : public MomentCurvatureLaw {
 
  private:
   const CubicPiece& Piece(double x) const {
-    if (x < x_.front()) return pieces_.front();
+    if (x <= x_.front()) return pieces_.front();
     if (x >= x_.back()) return pieces_.back();
-    // x_[i] ≤ x < x_[i + 1]: piece i + 1.
-    const auto i = std::upper_bound(x_.begin(), x_.end(), x) - x_.begin() - 1;
+    // A knot belongs to the piece anchored at it, so the data are reproduced
+    // exactly: x_[i] ≤ x < x_[i + 1] for x ≥ 0, x_[i] < x ≤ x_[i + 1] for x < 0.
+    const auto i = x >= 0 ? std::upper_bound(x_.begin(), x_.end(), x) - x_.begin() - 1
+                          : std::lower_bound(x_.begin(), x_.end(), x) - x_.begin() - 1;
     return pieces_[static_cast<std::size_t>(i) + 1];
   }
 
@@ -284,8 +283,8 @@ std::unique_ptr<MomentCurvatureLaw> MakeCurveLaw(std::vector<std::array<double, 
     }
     if (i > 0 && !(points[i][0] > points[i - 1][0])) {
       std::ostringstream os;
-      os << "bending curve: K must be strictly increasing, but point " << i << " has K = "
-         << points[i][0] << " after K = " << points[i - 1][0];
+      os << "bending curve: K must be strictly increasing, but point " << i
+         << " has K = " << points[i][0] << " after K = " << points[i - 1][0];
       Fail(os.str());
     }
     if (points[i][0] == 0 && points[i][1] != 0) {
