@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/io/json_cursor.h"
+#include "core/io/kawabata_reader.h"
 #include "core/model/scene_error.h"
 
 namespace drape {
@@ -330,6 +331,16 @@ BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c) {
         points.Items()[i].Fail("curvatures must increase from point to point");
   } else {
     law.file = ReadFileReference(c["file"]);
+    // The measured points, averaged over loading and unloading (FORMAT.md);
+    // a bad file is a scene error at this key, with its own line number.
+    const fs::path file(law.file);
+    try {
+      const KawabataCurve curve = ReadKawabata(file.is_absolute() ? file : base_ / file);
+      for (size_t i = 0; i < curve.curvature.size(); ++i)
+        law.points.push_back({curve.curvature[i], curve.moment[i]});
+    } catch (const KawabataError& e) {
+      c["file"].Fail(e.what());
+    }
   }
   return law;
 }

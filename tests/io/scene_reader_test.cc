@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -185,6 +186,31 @@ TEST(SceneReader, FileReferencesMustExist) {
   std::string message = ErrorOf(doc);
   EXPECT_EQ(message.rfind("material.bending.file: cannot read 'no-such-kawabata.csv'", 0), 0u)
       << message;
+}
+
+// A Kawabata file in a curve law is read with the scene: its averaged
+// points are the law's, in SI; a bad file is an error at the key, carrying
+// the file's own line number.
+TEST(SceneReader, CurveLawReadsItsKawabataFile) {
+  json doc = Minimal();
+  doc["material"]["bending"] = {{"model", "curve"},
+                                {"file", "../materials/kawabata/cotton-twill-warp.csv"}};
+  const Scene scene = SceneFromJson(doc, test::ScenesDir());
+  const auto& law = std::get<CurveBending>(scene.material.bending.warp);
+  ASSERT_EQ(law.points.size(), 51u);  // −2.5 … 2.5 1/cm in steps of 0.1
+  // The paper's fit at K = 1 1/cm: Σ cₖ = 0.58222 gf·cm/cm (the file is
+  // synthetic from it, with ±0.02 hysteresis averaged out).
+  const auto& at_one = law.points[35];
+  EXPECT_NEAR(at_one[0], 100.0, 1e-9);
+  EXPECT_NEAR(at_one[1], (1.33387 - 2.23070 + 2.36510 - 1.08471 + 0.17876) * 9.80665e-3, 1e-12);
+
+  const std::filesystem::path bad = std::filesystem::temp_directory_path() / "drape-bad-kes.csv";
+  std::ofstream(bad) << "curvature (1/cm),moment (gf*cm/cm)\n0,0\n0.1,abc\n";
+  doc["material"]["bending"]["file"] = bad.string();
+  const std::string message = ErrorOf(doc);
+  EXPECT_EQ(message.rfind("material.bending.file: ", 0), 0u) << message;
+  EXPECT_NE(message.find("line 3"), std::string::npos) << message;
+  std::filesystem::remove(bad);
 }
 
 TEST(SceneReader, ReleasedGripperCannotMoveLater) {
