@@ -17,5 +17,7 @@ using CommandRunner = std::function<int()>;
 void AddValidateCommand(CLI::App& app, CommandRunner& runner);
 // Adds `run SCENE -o DIR [--quiet] [--verbose] [--threads N]`.
 void AddRunCommand(CLI::App& app, CommandRunner& runner);
+// Adds `material fit FILE [--degree N] [--branch B] [--json]`.
+void AddMaterialCommand(CLI::App& app, CommandRunner& runner);
 
 }  // namespace drape::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   drape::app::CommandRunner runner;
   drape::app::AddValidateCommand(app, runner);
   drape::app::AddRunCommand(app, runner);
+  drape::app::AddMaterialCommand(app, runner);
 
   try {
     app.parse(argc, argv);

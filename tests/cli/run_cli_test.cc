@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/io/state_file.h"
+#include "support/drape_command.h"
 #include "support/test_paths.h"
 
 namespace drape {
@@ -41,23 +42,11 @@ using nlohmann::json;
 constexpr double kSheetWeight = 0.5425 * 0.028349523125 * 9.80665;
 constexpr double kSceneTolerance = 1e-6;  // block-drape.json's solver.tolerance
 
-struct CommandResult {
-  int exit_code;
-  std::string output;
-};
+using test::CommandResult;
 
-// Runs `drape ARGUMENTS` through the shell; stderr is not a terminal. With
-// `stderr_only` stdout is discarded, otherwise both are captured.
+// `drape ARGUMENTS`; with `stderr_only` stdout is discarded.
 CommandResult RunCommand(const std::string& arguments, bool stderr_only = false) {
-  std::string command =
-      std::string(DRAPE_CLI) + " " + arguments + (stderr_only ? " 2>&1 >/dev/null" : " 2>&1");
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return {-1, "popen failed"};
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  return test::RunDrape(arguments, stderr_only ? test::Captured::kStderr : test::Captured::kBoth);
 }
 
 // A fresh directory under the system's temporary directory, removed with

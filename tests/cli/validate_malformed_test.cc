@@ -8,6 +8,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "support/drape_command.h"
 #include "support/test_paths.h"
 
 namespace drape {
@@ -15,20 +16,8 @@ namespace {
 
 using nlohmann::json;
 
-struct CommandResult {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-CommandResult RunDrape(const std::string& arguments) {
-  std::string command = std::string(DRAPE_CLI) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using test::CommandResult;
+using test::RunDrape;
 
 json StripFold() {
   std::ifstream in(test::ScenesDir() / "strip-fold.json");
