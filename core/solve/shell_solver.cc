@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 
@@ -376,6 +377,18 @@ bool ShellSolver::Impl::Settle(int index, const StageLoading& loading, StageSumm
     step.negative_pivots = newton.negative_pivots;
     ++stage.steps;
     if (!Emit(index, stage.steps, 1.0, loading, step)) return false;
+  }
+  if (last_stabilization_force > negligible) {
+    char note[200];
+    std::snprintf(note,
+                  sizeof note,
+                  "stage '%s' ends with stabilisation springs still carrying up to %.3g N per "
+                  "node (%.2g of the weight) after %d settle steps",
+                  stage.name.c_str(),
+                  last_stabilization_force,
+                  last_stabilization_force / model.total_weight.norm(),
+                  kMaxSettlePasses);
+    summary.notes.push_back(note);
   }
   return true;
 }
