@@ -17,22 +17,14 @@
 #include "core/solve/node_contact.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/shell_solver.h"
+#include "scene_solve.h"
 #include "support/test_paths.h"
 
 namespace drape {
 namespace {
 
 void BM_Scene(benchmark::State& bench, const char* file) {
-  const Scene scene = ReadScene(test::ScenesDir() / file);
-  SolveSummary summary;
-  for (auto _ : bench) {
-    ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
-    summary = solver.Solve({});
-  }
-  if (!summary.IsComplete()) bench.SkipWithError(summary.message.c_str());
-  bench.counters["steps"] = summary.steps;
-  bench.counters["iterations"] = summary.iterations;
-  bench.counters["factorization_share"] = summary.factorization_s / summary.total_s;
+  SolveSceneForBenchmark(bench, ReadScene(test::ScenesDir() / file));
 }
 BENCHMARK_CAPTURE(BM_Scene, rod_drape, "rod-drape-linear.json")
     ->Unit(benchmark::kMillisecond)

@@ -2,6 +2,7 @@
 
 #include "core/model/overloaded.h"
 #include "core/model/triangle_mesh_geometry.h"
+#include "core/model/vec3_eigen.h"
 
 #include <Eigen/Geometry>
 
@@ -14,10 +15,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-Vector3d ToVector(const Vec3& v) {
-  return {v[0], v[1], v[2]};
-}
-
 // Any unit vector perpendicular to `a`, for points exactly on an axis or at a
 // centre, where the normal is not defined and any choice is as good.
 Vector3d AnyPerpendicular(const Vector3d& a) {
@@ -28,7 +25,7 @@ Vector3d AnyPerpendicular(const Vector3d& a) {
 class PlaneGeometry final : public ObstacleGeometry {
  public:
   explicit PlaneGeometry(const PlaneShape& s)
-      : point_(ToVector(s.point)), normal_(ToVector(s.normal).normalized()) {}
+      : point_(ToEigen(s.point)), normal_(ToEigen(s.normal).normalized()) {}
 
   DistanceQuery Query(const Vector3d& x) const override {
     return {normal_.dot(x - point_), normal_, Matrix3d::Zero()};
@@ -40,7 +37,7 @@ class PlaneGeometry final : public ObstacleGeometry {
 
 class SphereGeometry final : public ObstacleGeometry {
  public:
-  explicit SphereGeometry(const SphereShape& s) : center_(ToVector(s.center)), radius_(s.radius) {}
+  explicit SphereGeometry(const SphereShape& s) : center_(ToEigen(s.center)), radius_(s.radius) {}
 
   DistanceQuery Query(const Vector3d& x) const override {
     const Vector3d r = x - center_;
@@ -61,8 +58,8 @@ class SphereGeometry final : public ObstacleGeometry {
 class CylinderGeometry final : public ObstacleGeometry {
  public:
   explicit CylinderGeometry(const CylinderShape& s)
-      : point_(ToVector(s.point)),
-        axis_(ToVector(s.axis).normalized()),
+      : point_(ToEigen(s.point)),
+        axis_(ToEigen(s.axis).normalized()),
         radius_(s.radius),
         half_length_(s.length ? 0.5 * *s.length : -1.0) {}
 
@@ -109,7 +106,7 @@ class CylinderGeometry final : public ObstacleGeometry {
 class BoxGeometry final : public ObstacleGeometry {
  public:
   explicit BoxGeometry(const BoxShape& s) : radius_(s.edge_radius) {
-    const Vector3d lo = ToVector(s.min), hi = ToVector(s.max);
+    const Vector3d lo = ToEigen(s.min), hi = ToEigen(s.max);
     center_ = 0.5 * (lo + hi);
     inner_half_ = 0.5 * (hi - lo) - Vector3d::Constant(radius_);
   }

@@ -5,17 +5,15 @@
 
 #include "core/mechanics/director.h"
 #include "core/model/overloaded.h"
+#include "core/model/vec3_eigen.h"
 
 namespace drape {
 namespace {
 
-Eigen::Vector3d V(const Vec3& v) {
-  return {v[0], v[1], v[2]};
-}
-
 // Keyframe k (k = 0 is the start, offset zero).
 Eigen::Vector3d Key(const KeyframesPath& k, int i) {
-  return i <= 0 ? Eigen::Vector3d::Zero() : V(k.points[std::min<size_t>(i, k.points.size()) - 1]);
+  return i <= 0 ? Eigen::Vector3d::Zero()
+                : ToEigen(k.points[std::min<size_t>(i, k.points.size()) - 1]);
 }
 
 void Keyframes(const KeyframesPath& k, double lambda, RigidMotion& m) {
@@ -48,12 +46,12 @@ RigidMotion MotionAt(const Path& path, double lambda) {
   RigidMotion m;
   std::visit(Overloaded{
                  [&](const LinePath& l) {
-                   m.translation = lambda * V(l.by);
-                   m.translation_rate = V(l.by);
+                   m.translation = lambda * ToEigen(l.by);
+                   m.translation_rate = ToEigen(l.by);
                  },
                  [&](const ArcPath& a) {
-                   const Eigen::Vector3d w = V(a.axis) * (a.angle_deg * M_PI / 180.0);
-                   m.center = V(a.center);
+                   const Eigen::Vector3d w = ToEigen(a.axis) * (a.angle_deg * M_PI / 180.0);
+                   m.center = ToEigen(a.center);
                    m.rotation = ExpRotation(lambda * w);
                    m.angular_rate = w;
                  },

@@ -10,6 +10,7 @@
 #include "core/model/node_selection.h"
 #include "core/model/outline_geometry.h"
 #include "core/model/scene_error.h"
+#include "core/model/vec3_eigen.h"
 
 namespace drape {
 namespace {
@@ -116,8 +117,7 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
   for (int i = 0; i < mesh.NodeCount(); ++i)
     model.reference.rotations[i] = RotationFromDirector(directors.row(i).transpose());
 
-  const Eigen::Vector3d gravity(
-      scene.gravity_direction[0], scene.gravity_direction[1], scene.gravity_direction[2]);
+  const Eigen::Vector3d gravity = ToEigen(scene.gravity_direction);
   model.weight_load = Eigen::VectorXd::Zero(model.DofCount());
   model.elements.reserve(mesh.ElementCount());
   for (int e = 0; e < mesh.ElementCount(); ++e) {
@@ -146,10 +146,7 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
     const auto& nodes = selections[s++].nodes;
     const double share = 1.0 / static_cast<double>(nodes.size());
     model.loads.push_back(
-        {load.name,
-         nodes,
-         share * Eigen::Vector3d(load.force[0], load.force[1], load.force[2]),
-         share * Eigen::Vector3d(load.moment[0], load.moment[1], load.moment[2])});
+        {load.name, nodes, share * ToEigen(load.force), share * ToEigen(load.moment)});
   }
   for (const auto& probe : scene.probes) model.probes.push_back(LocateProbe(mesh, probe));
   return model;

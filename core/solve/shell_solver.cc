@@ -101,6 +101,12 @@ struct ShellSolver::Impl {
   // Each runs one stage; false when the run must stop (the summary says why).
   bool RunStage(int index);
   bool RunHold(int index, const StageLoading& loading, StageSummary& stage);
+  // Newton at a fixed λ from the present state, judged against the force
+  // level (no load is added): a hold, a settle pass, an augmentation pass.
+  NewtonOutcome SolveAtFixedLambda(double lambda, const StageLoading& loading);
+  // Counts such a solve in the stage; false (and the run stopped, saying
+  // `failure` and why) when it was cancelled or did not converge.
+  bool Accept(const NewtonOutcome& newton, StageSummary& stage, const std::string& failure);
   bool RunLoadControl(int index, const StageLoading& loading, StageSummary& stage);
   bool RunArcLength(int index, const StageLoading& loading, StageSummary& stage);
   // Re-solves at the stage's end, springs re-anchored, until their force is
@@ -212,14 +218,7 @@ void ShellSolver::Impl::Augment(double lambda,
     const ShellState saved = state;
     const std::vector<double> multipliers = contact->multipliers();
     contact->Augment(state);
-    NewtonSettings settings = Newton();
-    settings.relative_to_force_level = true;  // no load is added
-    const NewtonOutcome newton = SolveEquilibrium(
-        *system,
-        [&](const ShellState& s) { return loading.External(lambda, s); },
-        settings,
-        state,
-        cancel);
+    const NewtonOutcome newton = SolveAtFixedLambda(lambda, loading);
     if (newton.status != NewtonOutcome::Status::kConverged) {
       // Keep the penalty solution; the report shows its penetration.
       state = saved;
@@ -316,15 +315,20 @@ bool ShellSolver::Impl::RetryAfterFailure(const ContinuationStep& step,
   return true;
 }
 
-bool ShellSolver::Impl::RunHold(int index, const StageLoading& loading, StageSummary& stage) {
+NewtonOutcome ShellSolver::Impl::SolveAtFixedLambda(double lambda, const StageLoading& loading) {
   NewtonSettings settings = Newton();
-  settings.relative_to_force_level = true;  // a hold adds no load
-  NewtonOutcome newton = SolveEquilibrium(
+  settings.relative_to_force_level = true;
+  return SolveEquilibrium(
       *system,
-      [&](const ShellState& s) { return loading.External(1.0, s); },
+      [&](const ShellState& s) { return loading.External(lambda, s); },
       settings,
       state,
       cancel);
+}
+
+bool ShellSolver::Impl::Accept(const NewtonOutcome& newton,
+                               StageSummary& stage,
+                               const std::string& failure) {
   stage.iterations += newton.iterations;
   summary.iterations += newton.iterations;
   if (newton.status == NewtonOutcome::Status::kCancelled) {
@@ -333,16 +337,30 @@ bool ShellSolver::Impl::RunHold(int index, const StageLoading& loading, StageSum
   }
   if (newton.status != NewtonOutcome::Status::kConverged) {
     Stop(Termination::kStepTooSmall,
-         "stage '" + stage.name + "' found no equilibrium: " + newton.reason);
+         "stage '" + stage.name + "' " + failure + ": " + newton.reason);
     return false;
   }
+  return true;
+}
+
+namespace {
+
+ContinuationStep StepOf(const NewtonOutcome& newton) {
   ContinuationStep step;
   step.iterations = newton.iterations;
   step.residuals = newton.residuals;
   step.negative_pivots = newton.negative_pivots;
+  return step;
+}
+
+}  // namespace
+
+bool ShellSolver::Impl::RunHold(int index, const StageLoading& loading, StageSummary& stage) {
+  const NewtonOutcome newton = SolveAtFixedLambda(1.0, loading);
+  if (!Accept(newton, stage, "found no equilibrium")) return false;
   stage.steps = 1;
   stage.final_lambda = 1;
-  return Emit(index, 1, 1.0, loading, step);
+  return Emit(index, 1, 1.0, loading, StepOf(newton));
 }
 
 bool ShellSolver::Impl::Settle(int index, const StageLoading& loading, StageSummary& stage) {
@@ -351,32 +369,11 @@ bool ShellSolver::Impl::Settle(int index, const StageLoading& loading, StageSumm
   const double negligible = 1e-12 * model.total_weight.norm();
   for (int pass = 0; pass < kMaxSettlePasses; ++pass) {
     if (last_stabilization_force <= negligible) return true;
-    NewtonSettings settings = Newton();
-    settings.relative_to_force_level = true;
-    NewtonOutcome newton = SolveEquilibrium(
-        *system,
-        [&](const ShellState& s) { return loading.External(1.0, s); },
-        settings,
-        state,
-        cancel);
-    stage.iterations += newton.iterations;
-    summary.iterations += newton.iterations;
-    if (newton.status == NewtonOutcome::Status::kCancelled) {
-      Stop(Termination::kCancelled, "cancelled in stage '" + stage.name + "'");
-      return false;
-    }
-    if (newton.status != NewtonOutcome::Status::kConverged) {
-      Stop(Termination::kStepTooSmall,
-           "stage '" + stage.name + "' did not settle without its stabilisation: " + newton.reason);
-      return false;
-    }
+    const NewtonOutcome newton = SolveAtFixedLambda(1.0, loading);
+    if (!Accept(newton, stage, "did not settle without its stabilisation")) return false;
     if (newton.iterations == 0) return true;  // already in equilibrium without them
-    ContinuationStep step;
-    step.iterations = newton.iterations;
-    step.residuals = newton.residuals;
-    step.negative_pivots = newton.negative_pivots;
     ++stage.steps;
-    if (!Emit(index, stage.steps, 1.0, loading, step)) return false;
+    if (!Emit(index, stage.steps, 1.0, loading, StepOf(newton))) return false;
   }
   if (last_stabilization_force > negligible) {
     char note[200];
