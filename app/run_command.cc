@@ -146,8 +146,10 @@ int RunRun(const RunArgs& args) {
       std::cerr << "  stability changed at step " << e.step << " (lambda " << e.lambda
                 << "): negative pivots " << e.negative_pivots_before << " -> "
                 << e.negative_pivots_after << "\n";
-    if (!args.verbose)
+    if (!args.verbose) {
+      for (const auto& warning : summary.warnings) std::cerr << "  warning: " << warning << "\n";
       for (const auto& note : summary.notes) std::cerr << "  note: " << note << "\n";
+    }
     std::cerr << "  results: " << (writer->directory() / kResultFileName).string() << "\n";
   }
   return ExitCode(summary.termination);

@@ -1,5 +1,6 @@
 #include "core/io/result_writer.h"
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -92,6 +93,7 @@ void ResultWriter::AddStep(const StepState& step) {
          {"residuals", step.residuals},
          {"arc_length", step.arc_length},
          {"negative_pivots", step.negative_pivots},
+         {"max_curvature", step.max_curvature},
          {"reactions", Named(step.reactions)},
          {"probes", Named(step.probes)}};
   if (step.contact) {
@@ -156,6 +158,12 @@ void ResultWriter::Finish(const SolveSummary& summary) {
                                      {"negative_pivots_before", e.negative_pivots_before},
                                      {"negative_pivots_after", e.negative_pivots_after}});
   r["notes"] = summary.notes;
+  r["warnings"] = summary.warnings;
+  // JSON has no infinity: a linear law's unlimited range is null.
+  r["bending"] = {
+      {"max_curvature", summary.max_curvature},
+      {"valid_to",
+       std::isfinite(summary.bending_valid_to) ? json(summary.bending_valid_to) : json(nullptr)}};
   if (summary.contact_penalty > 0)
     r["contact"] = {{"penalty", summary.contact_penalty},
                     {"max_penetration", summary.max_penetration},

@@ -135,6 +135,7 @@ void Weight(const Columns& b, const Stiffness& d, Weighted&& db) {
 void AddGaussPointStiffness(int p,
                             const ShellElementReference::GaussPoint& gp,
                             const ShellSection& section,
+                            const Eigen::Matrix3d& bending_tangent,
                             const Eigen::Matrix<double, 3, 2>& f,
                             const Eigen::Matrix<double, 3, 2>& dtx,
                             const Eigen::Matrix2d& n_da,
@@ -153,7 +154,7 @@ void AddGaussPointStiffness(int p,
     TranslationPart(s.b_membrane.col(3 * p + c)) = d_membrane[c];
   }
   Weight(s.b_bend_shear.middleCols<3>(3 * p),
-         gp.area * section.bending,
+         gp.area * bending_tangent,
          s.db_bend_shear.middleCols<3>(3 * p));
   Weight(s.b_membrane.middleCols<3>(3 * p),
          gp.area * section.membrane,
@@ -284,6 +285,20 @@ ShellElementReference MakeShellElementReference(const NodeColumns& positions,
   return ref;
 }
 
+std::array<Eigen::Vector3d, 4> BendingStrains(const ShellElementReference& ref,
+                                              const NodeColumns& x,
+                                              const NodeColumns& t) {
+  std::array<Eigen::Vector3d, 4> strains;
+  for (int p = 0; p < 4; ++p) {
+    const auto& gp = ref.gauss[p];
+    const Eigen::Matrix<double, 3, 2> f = x * gp.dn;
+    const Eigen::Matrix<double, 3, 2> dtx = t * gp.dn;
+    const Eigen::Matrix2d kap = 0.5 * (f.transpose() * dtx + dtx.transpose() * f) - gp.curvature0;
+    strains[p] = Eigen::Vector3d(kap(0, 0), kap(1, 1), 2 * kap(0, 1));
+  }
+  return strains;
+}
+
 void EvaluateShellElement(const ShellElementReference& ref,
                           const ShellSection& section,
                           const ShellElementState& state,
@@ -315,9 +330,21 @@ void EvaluateShellElement(const ShellElementReference& ref,
     const Eigen::Vector3d e_m(eps(0, 0), eps(1, 1), 2 * eps(0, 1));
     const Eigen::Vector3d e_b(kap(0, 0), kap(1, 1), 2 * kap(0, 1));
     const Eigen::Vector3d n = section.membrane * e_m;
-    const Eigen::Vector3d m = section.bending * e_b;
     const Eigen::Vector2d q = section.shear * gamma;
-    result.value += gp.area * 0.5 * (e_m.dot(n) + e_b.dot(m) + gamma.dot(q));
+    Eigen::Vector3d m;
+    double bending_energy;
+    const Eigen::Matrix3d* bending_tangent = &section.bending;
+    PlateBendingResponse law;
+    if (section.bending_law) {
+      section.bending_law->Evaluate(e_b, want_hessian, law);
+      m = law.moment;
+      bending_energy = law.energy;
+      bending_tangent = &law.tangent;
+    } else {
+      m = section.bending * e_b;
+      bending_energy = 0.5 * e_b.dot(m);
+    }
+    result.value += gp.area * (0.5 * (e_m.dot(n) + gamma.dot(q)) + bending_energy);
     if (!want_gradient) continue;
 
     // ∂W/∂φ_I = dA (φ,i n_ij + t,i m_ij) N_I,j and ∂W/∂t_I = dA φ,i m_ij N_I,j
@@ -328,7 +355,8 @@ void EvaluateShellElement(const ShellElementReference& ref,
     director_force.noalias() += (f * m_da) * gp.dn.transpose();
     tying_force.noalias() += shear_interpolation.transpose() * (gp.area * q);
     if (want_hessian) {
-      AddGaussPointStiffness(p, gp, section, f, dtx, n_da, m_da, shear_interpolation, stiffness);
+      AddGaussPointStiffness(
+          p, gp, section, *bending_tangent, f, dtx, n_da, m_da, shear_interpolation, stiffness);
     }
   }
   if (!want_gradient) {

@@ -76,4 +76,10 @@ void EvaluateShellElement(const ShellElementReference& reference,
                           ElementOutput output,
                           ElementEnergy& result);
 
+// The bending strains κ = (κ₁₁, κ₂₂, 2κ₁₂) at the four Gauss points, in the
+// material frame [1/m]: what the section law is evaluated on.
+std::array<Eigen::Vector3d, 4> BendingStrains(const ShellElementReference& reference,
+                                              const NodeColumns& positions,
+                                              const NodeColumns& directors);
+
 }  // namespace drape

@@ -11,22 +11,10 @@
 #include "core/model/outline_geometry.h"
 #include "core/model/scene_error.h"
 #include "core/model/vec3_eigen.h"
+#include "core/solve/material_section.h"
 
 namespace drape {
 namespace {
-
-// Rejects, by key, what the engine cannot model yet.
-void CheckSupported(const Scene& scene) {
-  if (std::holds_alternative<OrthotropicMembrane>(scene.material.membrane))
-    throw SceneError("material.membrane",
-                     "orthotropic membranes are not supported by this version yet");
-  if (scene.material.bending.weft)
-    throw SceneError("material.bending.weft",
-                     "direction-dependent bending is not supported by this version yet");
-  if (!std::holds_alternative<LinearBending>(scene.material.bending.warp))
-    throw SceneError("material.bending.model",
-                     "only 'linear' bending is supported by this version yet");
-}
 
 // Nodal directors of the reference surface: the normalised sum of the normals
 // of the quads around each node (e₃ exactly on a flat sheet).
@@ -88,24 +76,18 @@ ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe) {
 
 }  // namespace
 
-ShellSection SectionOf(const Material& material) {
-  const auto& iso = std::get<IsotropicMembrane>(material.membrane);
-  const auto& law = std::get<LinearBending>(material.bending.warp);
-  return IsotropicSection(
-      iso.youngs_modulus, iso.poisson_ratio, material.thickness, law.rigidity.value_or(0.0));
-}
-
 ShellModel BuildShellModel(const Scene& scene) {
-  CheckSupported(scene);
   return BuildShellModel(scene, MeshFabric(scene.fabric));
 }
 
 ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
-  CheckSupported(scene);
   ShellModel model;
   model.mesh = std::move(reference_mesh);
   const Mesh& mesh = model.mesh;
-  model.section = SectionOf(scene.material);
+  MaterialSection material = MakeMaterialSection(scene.material);
+  model.section = std::move(material.section);
+  model.bending_valid_to = material.bending_valid_to;
+  model.warnings = std::move(material.warnings);
   model.characteristic_length = OutlineSize(scene.fabric.outline);
   model.thickness = scene.material.thickness;
 

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,13 +50,16 @@ struct ShellModel {
   std::vector<ProbePoint> probes;
   double characteristic_length = 0;  // diagonal of the part [m]
   double thickness = 0;              // h [m]
+  // |K| up to which the bending laws are data or fit [1/m]; ∞ when linear.
+  double bending_valid_to = std::numeric_limits<double>::infinity();
+  std::vector<std::string> warnings;  // about the scene's material, each naming its key
 
   int NodeCount() const { return mesh.NodeCount(); }
   int DofCount() const { return kDofsPerNode * mesh.NodeCount(); }
 };
 
-// Builds the model of a scene. Throws SceneError naming the key of any
-// feature the engine does not support yet (it never silently ignores one).
+// Builds the model of a scene. Throws SceneError naming the key of anything
+// the engine cannot model (it never silently ignores one).
 ShellModel BuildShellModel(const Scene& scene);
 // The same on a given reference mesh instead of meshing the scene's outline
 // (patch tests, imported meshes). Selections still use the outline.
@@ -65,8 +69,5 @@ ShellModel BuildShellModel(const Scene& scene, Mesh mesh);
 Eigen::Vector3d ProbePosition(const ShellModel& model,
                               const ProbePoint& probe,
                               const ShellState& state);
-
-// The section law of a material (isotropic, linear bending).
-ShellSection SectionOf(const Material& material);
 
 }  // namespace drape

@@ -15,6 +15,7 @@
 #include "core/solve/arc_length_stepper.h"
 #include "core/solve/contact_setup.h"
 #include "core/solve/dof_map.h"
+#include "core/solve/element_fields.h"
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/newton_solver.h"
 #include "core/solve/node_contact.h"
@@ -250,6 +251,8 @@ bool ShellSolver::Impl::Emit(int stage_index,
   step.residuals = result.residuals;
   step.arc_length = result.arc_length;
   step.negative_pivots = result.negative_pivots;
+  step.max_curvature = MaxPrincipalCurvature(model, state);
+  summary.max_curvature = std::max(summary.max_curvature, step.max_curvature);
   // What each support and gripper exerts on the fabric: F_int − F_ext at its
   // nodes (zero for a released gripper, whose nodes are free).
   const Eigen::VectorXd unbalanced = system->InternalForce() - loading.External(lambda, state);
@@ -585,6 +588,8 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.nodes = m.model.NodeCount();
   m.summary.elements = m.model.mesh.ElementCount();
   m.summary.dofs = m.model.DofCount();
+  m.summary.warnings = m.model.warnings;
+  m.summary.bending_valid_to = m.model.bending_valid_to;
   std::string error;
   if (!m.options.IsValid(&error)) {
     m.Stop(Termination::kInvalidInput, error);

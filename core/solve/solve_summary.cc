@@ -1,5 +1,6 @@
 #include "core/solve/solve_summary.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -40,6 +41,14 @@ std::string SolveSummary::BriefReport() const {
                 step_cuts,
                 total_s);
   std::string out = line;
+  if (std::isfinite(bending_valid_to)) {
+    std::snprintf(line,
+                  sizeof line,
+                  ", largest curvature %.3g 1/cm (law valid to %.3g 1/cm)",
+                  max_curvature / 100,
+                  bending_valid_to / 100);
+    out += line;
+  }
   if (!IsComplete()) out += " — " + message;
   return out;
 }
@@ -110,6 +119,16 @@ std::string SolveSummary::FullReport() const {
     }
     s << "\n";
   }
+  if (std::isfinite(bending_valid_to)) {
+    std::snprintf(row,
+                  sizeof row,
+                  "  bending: largest curvature %.4g 1/cm, the law's valid range to %.4g 1/cm%s\n",
+                  max_curvature / 100,
+                  bending_valid_to / 100,
+                  max_curvature > bending_valid_to ? " (exceeded: the law was extrapolated)" : "");
+    s << row;
+  }
+  for (const auto& warning : warnings) s << "  warning: " << warning << "\n";
   for (const auto& note : notes) s << "  note: " << note << "\n";
   s << "  termination: " << ToString(termination) << " — " << message << "\n";
   return s.str();

@@ -3,6 +3,7 @@
 // one is obvious.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -60,7 +61,14 @@ struct SolveSummary {
   int reused_factorizations = 0;      // requests for a tangent already factorised
   std::vector<StageSummary> stages;
   std::vector<StabilityEvent> stability_events;
-  std::vector<std::string> notes;  // what was used instead of what was asked, and why
+  std::vector<std::string> notes;     // what was used instead of what was asked, and why
+  std::vector<std::string> warnings;  // about the scene (e.g. a softening bending law)
+
+  // Bending: the largest principal curvature reached in any converged step,
+  // against the range the bending laws were measured or fitted over (∞ when
+  // every law is linear) [1/m].
+  double max_curvature = 0;
+  double bending_valid_to = std::numeric_limits<double>::infinity();
 
   // Contact (scenes with obstacles; zero otherwise).
   double contact_penalty = 0;          // k per area used [N/m³]

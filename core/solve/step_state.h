@@ -42,6 +42,7 @@ struct StepState {
   std::vector<double> residuals;  // ‖R‖/‖R₀‖ after each assembly (R₀: the load the step added)
   double arc_length = 0;          // the step's length along the path
   int negative_pivots = 0;               // of the converged tangent
+  double max_curvature = 0;              // largest principal |κ| at a Gauss point [1/m]
   std::vector<NamedVector> reactions;    // force each support and gripper exerts [N]
   std::vector<NamedVector> probes;       // probe positions [m]
   std::optional<ContactReport> contact;  // present when the scene has obstacles

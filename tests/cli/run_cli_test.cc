@@ -379,13 +379,16 @@ const std::vector<InvalidCase>& InvalidCases() {
          return doc;
        },
        "obstacles: the fabric starts inside an obstacle: node"},
-      {"nonlinear bending",
+      {"bending law flat at zero curvature",
        [] {
          json doc = BlockDrape(10);
-         doc["material"]["bending"] = SceneJson("strip-convergence-20.json")["material"]["bending"];
+         doc["material"]["bending"] = {{"model", "curve"},
+                                       {"points", {{0.5, 0.0}, {1.0, 0.2}, {2.0, 0.6}}},
+                                       {"moment_unit", "gf*cm/cm"},
+                                       {"curvature_unit", "1/cm"}};
          return doc;
        },
-       "material.bending.model:"},
+       "material.bending: the bending law's stiffness dM/dK at K = 0 is not positive"},
       {"Poisson ratio 0.5",
        [] {
          json doc = BlockDrape(10);
