@@ -1,7 +1,7 @@
 // The seed paper's contact experiments (Eischen, Deng & Clapp, "Finite-element
 // modeling and control of flexible fabric parts", IEEE CG&A 16(5), 1996),
-// run with linear bending (the nonlinear law is a later issue) and reported
-// next to the published numbers.
+// run with the linear and the cotton's nonlinear bending law and compared with
+// the published numbers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,6 +40,26 @@ void ExpectForceBalance(const PaperRun& run, double tolerance) {
   EXPECT_NEAR(held.head<2>().norm(), 0.0, tolerance * run.weight);
 }
 
+// Table 2 with the cotton's nonlinear law: (3.85, −3.85, −12.14) cm computed.
+TEST(PaperContact, RodDrapeNonlinearCornerAAgainstTable2) {
+  const PaperRun run = Solve("rod-drape-nonlinear.json");
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  const Eigen::Vector3d a = 100 * run.last.probes.at(0).value;  // cm
+  std::printf(
+      "rod drape (nonlinear), corner A [cm]: ours (%.3f, %.3f, %.3f); Table 2 nonlinear (3.85, "
+      "-3.85, -12.14), measured (3.47, -3.47, -12.25); largest curvature %.3f 1/cm\n",
+      a.x(),
+      a.y(),
+      a.z(),
+      run.summary.max_curvature / 100);
+  EXPECT_NEAR(a.x(), -a.y(), 1e-6);
+  // Measured: 0.002 cm in x, 0.03 cm in z (0.15 % of the side). The same
+  // unpublished details as for the linear run leave us 0.1 cm.
+  EXPECT_NEAR(a.x(), 3.85, 0.1);
+  EXPECT_NEAR(a.z(), -12.14, 0.1);
+  ExpectForceBalance(run, 1e-4);
+}
+
 // Table 2: corner A (10, −10, 0) cm of a 20 × 20 cm cotton twill square whose
 // diagonal rests on a 2.5 cm rod: (2.83, −2.83, −12.57) cm computed with
 // linear bending, (3.47, −3.47, −12.25) cm measured.
@@ -71,6 +91,24 @@ TEST(PaperContact, RodDrapeCornerAAgainstTable2) {
 // 18 % mesh correction) and 2.80 cm measured. Ours is the linear law, so the
 // number is reported, not asserted; the run must complete with the table
 // and the reactions carrying the weight.
+TEST(PaperContact, DiagonalFoldNonlinearLoopHeight) {
+  const PaperRun run = Solve("diagonal-fold.json");
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  const double loop = 100 * run.last.state.positions.col(2).maxCoeff();
+  std::printf(
+      "diagonal fold, loop height (nonlinear bending): %.2f cm; paper 4.22 cm computed, 2.80 cm "
+      "measured; largest curvature %.2f 1/cm; %d steps, %.2f s\n",
+      loop,
+      run.summary.max_curvature / 100,
+      run.summary.steps,
+      run.summary.total_s);
+  // Same mesh and law as the paper; the pinned far corner and the arc's
+  // height are our assumptions (see the scene). Measured 3.79 cm, 10 % below
+  // the paper's computed 4.22 cm and between it and the 2.80 cm measured.
+  EXPECT_NEAR(loop, 4.22, 0.5);
+  ExpectForceBalance(run, 1e-4);
+}
+
 TEST(PaperContact, DiagonalFoldLoopHeight) {
   const PaperRun run = Solve("diagonal-fold-linear.json");
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
