@@ -62,6 +62,14 @@ class PolynomialLaw final : public MomentCurvatureLaw {
     const double x = std::abs(k);
     return x <= valid_to_ ? DP(x) : end_s_;
   }
+  Point At(double k) const override {
+    const double x = std::abs(k);
+    if (x > valid_to_) {
+      const double s = x - valid_to_;
+      return {end_w_ + s * (end_m_ + 0.5 * end_s_ * s), Sign(k) * (end_m_ + end_s_ * s), end_s_};
+    }
+    return {Q(x), Sign(k) * P(x), DP(x)};
+  }
   double ValidTo() const override { return valid_to_; }
 
  private:
@@ -201,6 +209,12 @@ class CurveLaw final : public MomentCurvatureLaw {
     const double x = odd_ ? std::abs(k) : k;
     const CubicPiece& p = Piece(x);
     return p.Stiffness(x - p.anchor);
+  }
+  Point At(double k) const override {
+    const double x = odd_ ? std::abs(k) : k;
+    const CubicPiece& p = Piece(x);
+    const double s = x - p.anchor;
+    return {p.Energy(s), (odd_ ? Sign(k) : 1.0) * p.Moment(s), p.Stiffness(s)};
   }
   double ValidTo() const override { return valid_to_; }
 

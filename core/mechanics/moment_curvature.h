@@ -23,6 +23,12 @@ class MomentCurvatureLaw {
   virtual double Energy(double k) const = 0;     // W [N·m/m · 1/m = N/m]
   virtual double Moment(double k) const = 0;     // M = W' [N·m/m]
   virtual double Stiffness(double k) const = 0;  // dM/dK [N·m²/m]
+  struct Point {
+    double energy, moment, stiffness;
+  };
+  // The three at once, for the element's inner loop (one branch, one piece
+  // lookup); the same values as the three calls.
+  virtual Point At(double k) const { return {Energy(k), Moment(k), Stiffness(k)}; }
   // |K| up to which the law is data or fit (infinity for the linear law).
   // For a curve whose data span both signs: the larger of |K_first|, |K_last|.
   virtual double ValidTo() const = 0;

@@ -7,6 +7,15 @@
 namespace drape {
 namespace {
 
+using DiagonalMetric = Eigen::DiagonalMatrix<double, 3>;
+
+void AddScaled(double s, const Eigen::Matrix3d& a, Eigen::Matrix3d& sum) {
+  sum += s * a;
+}
+void AddScaled(double s, const DiagonalMetric& a, Eigen::Matrix3d& sum) {
+  sum.diagonal() += s * a.diagonal();
+}
+
 // W(K) of a norm K = √(κᵀAκ) of the curvatures (A symmetric, positive
 // semi-definite) with its derivatives in κ, added to `response`:
 //   ∂W/∂κ = (M/K) Aκ,
@@ -14,8 +23,11 @@ namespace {
 // M/K → dM/dK(0) as K → 0 (every law has M(0) = 0 and a continuous tangent),
 // so below a round-off floor the law's initial tangent stands in for M/K and
 // the second term, bounded, vanishes with K.
+// `Metric` is a full Eigen::Matrix3d or, for the yarn curvatures, a diagonal
+// one (a third of the products in the element's inner loop).
+template <typename Metric>
 void AddNormLaw(const MomentCurvatureLaw& law,
-                const Eigen::Matrix3d& a,
+                const Metric& a,
                 const Eigen::Vector3d& curvature,
                 bool want_tangent,
                 PlateBendingResponse& response) {
@@ -26,16 +38,16 @@ void AddNormLaw(const MomentCurvatureLaw& law,
     const double b0 = law.Stiffness(0.0);
     response.energy += 0.5 * b0 * k * k;
     response.moment += b0 * a_k;
-    if (want_tangent) response.tangent += b0 * a;
+    if (want_tangent) AddScaled(b0, a, response.tangent);
     return;
   }
-  const double m = law.Moment(k);
-  const double secant = m / k;
-  response.energy += law.Energy(k);
+  const MomentCurvatureLaw::Point p = law.At(k);
+  const double secant = p.moment / k;
+  response.energy += p.energy;
   response.moment += secant * a_k;
   if (want_tangent) {
-    response.tangent += secant * a;
-    response.tangent += ((law.Stiffness(k) - secant) / (k * k)) * a_k * a_k.transpose();
+    AddScaled(secant, a, response.tangent);
+    response.tangent.noalias() += ((p.stiffness - secant) / (k * k)) * a_k * a_k.transpose();
   }
 }
 
@@ -64,8 +76,8 @@ class WarpWeftPlateLaw final : public PlateBendingLaw {
                    std::shared_ptr<const MomentCurvatureLaw> weft)
       : warp_(std::move(warp)), weft_(std::move(weft)) {
     // K₁² = κ₁₁² + (2κ₁₂)²/4, K₂² = κ₂₂² + (2κ₁₂)²/4.
-    warp_norm_ = Eigen::Vector3d(1, 0, 0.25).asDiagonal();
-    weft_norm_ = Eigen::Vector3d(0, 1, 0.25).asDiagonal();
+    warp_norm_.diagonal() << 1, 0, 0.25;
+    weft_norm_.diagonal() << 0, 1, 0.25;
   }
   void Evaluate(const Eigen::Vector3d& curvature,
                 bool want_tangent,
@@ -77,7 +89,7 @@ class WarpWeftPlateLaw final : public PlateBendingLaw {
 
  private:
   std::shared_ptr<const MomentCurvatureLaw> warp_, weft_;
-  Eigen::Matrix3d warp_norm_, weft_norm_;
+  DiagonalMetric warp_norm_, weft_norm_;
 };
 
 void RequireLaw(const std::shared_ptr<const MomentCurvatureLaw>& law, const char* what) {

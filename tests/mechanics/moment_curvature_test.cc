@@ -566,3 +566,25 @@ TEST(MomentCurvatureCurve, RejectsBadInput) {
 
 }  // namespace
 }  // namespace drape
+
+namespace drape {
+namespace {
+
+TEST(MomentCurvatureLaw, AtGivesTheThreeSeparateValues) {
+  std::vector<std::unique_ptr<MomentCurvatureLaw>> laws;
+  laws.push_back(MakeLinearLaw(1.3e-4));
+  laws.push_back(MakePolynomialLaw(CottonSI(), kCottonValidTo));
+  laws.push_back(MakeCurveLaw({{50, 0.004}, {100, 0.007}, {200, 0.009}}));
+  laws.push_back(MakeCurveLaw({{-100, -0.01}, {0, 0}, {80, 0.004}, {160, 0.012}}));
+  for (const auto& law : laws)
+    for (double k = -600; k <= 600; k += 7.3) {
+      const MomentCurvatureLaw::Point p = law->At(k);
+      // Equal up to the order in which the compiler fuses multiply-adds.
+      EXPECT_DOUBLE_EQ(p.energy, law->Energy(k)) << k;
+      EXPECT_DOUBLE_EQ(p.moment, law->Moment(k)) << k;
+      EXPECT_DOUBLE_EQ(p.stiffness, law->Stiffness(k)) << k;
+    }
+}
+
+}  // namespace
+}  // namespace drape
