@@ -1,11 +1,16 @@
-// `drape material fit FILE [--degree N] [--branch B] [--json]`: the paper's
-// polynomial bending law fitted to Kawabata data, in the textile units KES
+// `drape material fit FILE [--model polynomial|spline] [--degree N]
+// [--knots N] [--branch B] [--json]`: the paper's polynomial bending law, or
+// a monotone spline, fitted to Kawabata data in the textile units KES
 // reports (gf·cm/cm against 1/cm). With --json, a `bending` object ready to
-// paste into a scene, plus the fit's RMS error and curvature range.
+// paste into a scene, plus the fit's RMS error and curvature range. A fit
+// that softens (dM/dK < 0) inside its range is warned of.
+//
+// `drape material list [--json]`: the library materials a scene can name.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -13,7 +18,10 @@
 
 #include "app/commands.h"
 #include "core/io/kawabata_reader.h"
+#include "core/io/material_library.h"
+#include "core/mechanics/moment_curvature.h"
 #include "core/mechanics/moment_curvature_fit.h"
+#include "core/model/scene_error.h"
 
 namespace drape::app {
 namespace {
@@ -23,8 +31,11 @@ constexpr double kGfCmPerCm = 9.80665e-3;  // gf·cm/cm in N·m/m
 
 struct FitArgs {
   std::string file;
+  std::string model = "polynomial";
   int degree = 5;
+  int knots = 20;
   std::string branch = "average";
+  std::string curvature_column, moment_column;
   bool json = false;
 };
 
@@ -53,7 +64,38 @@ void PrintReport(const FitArgs& args,
   for (size_t k = 0; k < fit.coefficients.size(); ++k)
     std::printf("  c%zu = %.6g\n", k + 1, fit.coefficients[k]);
   std::printf("rms error %.3g gf*cm/cm; valid to %.4g 1/cm\n", fit.rms_error, fit.valid_to);
-  for (const auto& w : curve.warnings) std::printf("warning: %s\n", w.c_str());
+}
+
+void PrintSplineReport(const FitArgs& args,
+                       const KawabataCurve& curve,
+                       const CurveFit& fit,
+                       KawabataBranch branch) {
+  std::printf("%s: %zu points, K from %.4g to %.4g 1/cm (%s)\n",
+              args.file.c_str(),
+              curve.curvature.size(),
+              fit.range[0],
+              fit.range[1],
+              BranchName(branch));
+  std::printf("monotone spline through %zu knots [K in 1/cm, M in gf*cm/cm]:\n", fit.points.size());
+  for (const auto& p : fit.points) std::printf("  %8.4f  %10.6f\n", p[0], p[1]);
+  std::printf("rms error %.3g gf*cm/cm; valid to %.4g 1/cm\n", fit.rms_error, fit.valid_to);
+}
+
+// Where the fitted law's moment falls with curvature inside its range.
+std::vector<std::string> SofteningWarnings(const MomentCurvatureLaw& law) {
+  std::vector<std::string> warnings;
+  for (const auto& [from, to] : NegativeStiffnessIntervals(law)) {
+    if (to <= 0) continue;  // the mirrored interval of an odd law
+    char text[160];
+    std::snprintf(text,
+                  sizeof text,
+                  "the fitted moment falls with curvature (dM/dK < 0) for K from %.4g to %.4g "
+                  "1/cm; try a lower degree or the spline",
+                  std::max(from, 0.0),
+                  to);
+    warnings.push_back(text);
+  }
+  return warnings;
 }
 
 int RunFit(const FitArgs& args) {
@@ -63,28 +105,43 @@ int RunFit(const FitArgs& args) {
   try {
     KawabataOptions options;
     options.branch = branch;
+    options.curvature_column = args.curvature_column;
+    options.moment_column = args.moment_column;
     const KawabataCurve curve = ReadKawabata(args.file, options);
     std::vector<double> k, m;
     for (size_t i = 0; i < curve.curvature.size(); ++i) {
       k.push_back(curve.curvature[i] / kPerCm);
       m.push_back(curve.moment[i] / kGfCmPerCm);
     }
-    const PolynomialFit fit = FitOddPolynomial(k, m, args.degree);
-    if (!args.json) {
-      PrintReport(args, curve, fit, branch);
-      return 0;
+    std::vector<std::string> warnings = curve.warnings;
+    nlohmann::ordered_json out;
+    if (args.model == "spline") {
+      const CurveFit fit = FitMonotoneCurve(k, m, args.knots);
+      if (!args.json) PrintSplineReport(args, curve, fit, branch);
+      out = {{"model", "curve"},
+             {"points", fit.points},
+             {"moment_unit", "gf*cm/cm"},
+             {"curvature_unit", "1/cm"},
+             {"rms_error", fit.rms_error},
+             {"range", fit.range}};
+    } else {
+      const PolynomialFit fit = FitOddPolynomial(k, m, args.degree);
+      for (auto& w : SofteningWarnings(*MakePolynomialLaw(fit.coefficients, fit.valid_to)))
+        warnings.push_back(std::move(w));
+      if (!args.json) PrintReport(args, curve, fit, branch);
+      char valid_to[64];
+      std::snprintf(valid_to, sizeof valid_to, "%.6g 1/cm", fit.valid_to);
+      out = {{"model", "polynomial"},
+             {"coefficients", fit.coefficients},
+             {"moment_unit", "gf*cm/cm"},
+             {"curvature_unit", "1/cm"},
+             {"valid_to", valid_to},
+             {"rms_error", fit.rms_error},
+             {"range", fit.range}};
     }
-    char valid_to[64];
-    std::snprintf(valid_to, sizeof valid_to, "%.6g 1/cm", fit.valid_to);
-    const nlohmann::ordered_json out{{"model", "polynomial"},
-                                     {"coefficients", fit.coefficients},
-                                     {"moment_unit", "gf*cm/cm"},
-                                     {"curvature_unit", "1/cm"},
-                                     {"valid_to", valid_to},
-                                     {"rms_error", fit.rms_error},
-                                     {"range", fit.range}};
-    std::cout << out.dump(2) << "\n";
-    for (const auto& w : curve.warnings) std::cerr << "warning: " << w << "\n";
+    if (args.json) std::cout << out.dump(2) << "\n";
+    // Warnings go to stderr with --json, so that stdout stays one document.
+    for (const auto& w : warnings) (args.json ? std::cerr : std::cout) << "warning: " << w << "\n";
     return 0;
   } catch (const KawabataError& e) {
     std::cerr << "drape material fit: " << e.what() << "\n";
@@ -92,6 +149,35 @@ int RunFit(const FitArgs& args) {
     std::cerr << "drape material fit: " << args.file << ": " << e.what() << "\n";
   }
   return 1;
+}
+
+// The library as a scene in the working directory would see it.
+int RunList(bool json) {
+  const auto dirs = MaterialLibraryDirs(std::filesystem::current_path());
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  int status = 0;
+  for (const auto& name : LibraryMaterialNames(dirs)) {
+    try {
+      const LibraryMaterial entry = ReadLibraryMaterial(*FindLibraryMaterial(name, dirs));
+      if (json) {
+        out.push_back({{"library", name},
+                       {"name", entry.name},
+                       {"source", entry.source},
+                       {"file", entry.file.string()}});
+      } else {
+        std::printf("%-28s %s\n%-28s   source: %s\n",
+                    name.c_str(),
+                    entry.name.c_str(),
+                    "",
+                    entry.source.c_str());
+      }
+    } catch (const SceneError& e) {
+      std::cerr << "drape material list: " << e.what() << "\n";
+      status = 1;
+    }
+  }
+  if (json) std::cout << out.dump(2) << "\n";
+  return status;
 }
 
 }  // namespace
@@ -103,14 +189,32 @@ void AddMaterialCommand(CLI::App& app, CommandRunner& runner) {
   CLI::App* fit = material->add_subcommand(
       "fit", "Fit the bending law M = sign(K) sum c_k |K|^k to Kawabata (KES-FB2) data");
   fit->add_option("file", args->file, "Kawabata CSV/TSV file")->required();
-  fit->add_option("--degree", args->degree, "Number of coefficients c_1..c_n (1 to 9)")
+  fit->add_option("--model", args->model, "The law to fit")
+      ->check(CLI::IsMember({"polynomial", "spline"}))
+      ->capture_default_str();
+  fit->add_option("--degree", args->degree, "Polynomial: number of coefficients c_1..c_n (1 to 9)")
       ->check(CLI::Range(1, 9))
+      ->capture_default_str();
+  fit->add_option("--knots", args->knots, "Spline: number of knots (2 to 50)")
+      ->check(CLI::Range(2, 50))
       ->capture_default_str();
   fit->add_option("--branch", args->branch, "Which data to fit")
       ->check(CLI::IsMember({"average", "loading", "unloading"}))
       ->capture_default_str();
+  fit->add_option("--curvature-column",
+                  args->curvature_column,
+                  "Header name of the curvature column (default: found by name)");
+  fit->add_option("--moment-column",
+                  args->moment_column,
+                  "Header name of the moment column (default: found by name)");
   fit->add_flag("--json", args->json, "Print a scene-ready `bending` object as JSON");
   fit->callback([args, &runner] { runner = [args] { return RunFit(*args); }; });
+
+  auto list_json = std::make_shared<bool>(false);
+  CLI::App* list = material->add_subcommand(
+      "list", "List the library materials a scene can use as \"material\": {\"library\": NAME}");
+  list->add_flag("--json", *list_json, "Print the list as JSON");
+  list->callback([list_json, &runner] { runner = [list_json] { return RunList(*list_json); }; });
 }
 
 }  // namespace drape::app

@@ -9,6 +9,7 @@
 
 #include "core/io/json_cursor.h"
 #include "core/io/kawabata_reader.h"
+#include "core/io/material_library.h"
 #include "core/model/scene_error.h"
 
 namespace drape {
@@ -32,6 +33,7 @@ class SceneParser {
   Outline ReadOutline(const JsonCursor& c);
   MeshSpec ReadMeshSpec(const JsonCursor& c, const Outline& outline);
   ImperfectionSpec ReadImperfection(const JsonCursor& c);
+  Material ReadMaterialOrLibrary(const JsonCursor& c);
   Material ReadMaterial(const JsonCursor& c);
   Bending ReadBending(const JsonCursor& c);
   BendingLaw ReadBendingLaw(const JsonCursor& c);
@@ -115,7 +117,7 @@ Scene SceneParser::Read(const JsonCursor& root) {
   if (auto c = root.Find("name")) scene.name = c->String();
   if (auto c = root.Find("description")) scene.description = c->String();
   scene.fabric = ReadFabric(root["fabric"]);
-  scene.material = ReadMaterial(root["material"]);
+  scene.material = ReadMaterialOrLibrary(root["material"]);
   scene.supports =
       ReadList<Support>(root.Find("supports"), [&](auto& c) { return ReadSupport(c); });
   scene.grippers =
@@ -219,8 +221,106 @@ ImperfectionSpec SceneParser::ReadImperfection(const JsonCursor& c) {
 
 // ---- material -----------------------------------------------------------------
 
+namespace {
+
+// Keys a scene may give next to "library", and which library keys each one
+// replaces (a modulus replaces the library's orthotropic membrane, …).
+const std::map<std::string, std::vector<std::string>>& LibraryOverrides() {
+  static const std::map<std::string, std::vector<std::string>> overrides = {
+      {"thickness", {}},
+      {"areal_weight", {"areal_density"}},
+      {"areal_density", {"areal_weight"}},
+      {"youngs_modulus", {"membrane"}},
+      {"poisson_ratio", {"membrane"}},
+      {"membrane", {"youngs_modulus", "poisson_ratio"}},
+      {"bending", {}},
+      {"angle_deg", {}},
+  };
+  return overrides;
+}
+
+// Swaps the directory relative file names resolve against, for a scope.
+class BaseDirectory {
+ public:
+  BaseDirectory(fs::path& base, fs::path value) : base_(base), saved_(base) {
+    base_ = std::move(value);
+  }
+  ~BaseDirectory() { base_ = saved_; }
+
+ private:
+  fs::path& base_;
+  fs::path saved_;
+};
+
+}  // namespace
+
+// "material": {"library": "cotton-twill", …}: the library's material with the
+// scene's keys over it. The library entry must be valid on its own (its
+// errors name its file); its Kawabata file is resolved next to it and kept
+// as an absolute path, so that a scene written back reads the same data.
+Material SceneParser::ReadMaterialOrLibrary(const JsonCursor& c) {
+  if (!c.value().is_object() || !c.Has("library")) return ReadMaterial(c);
+  auto library = c["library"];
+  const std::string name = library.String();
+  const std::vector<fs::path> dirs = MaterialLibraryDirs(base_);
+  const std::optional<fs::path> file = FindLibraryMaterial(name, dirs);
+  if (!file) {
+    const std::vector<std::string> names = LibraryMaterialNames(dirs);
+    std::string message = "no library material " + Quoted(name);
+    // A likely typo first: the closest name within two edits.
+    for (const auto& n : names)
+      if (EditDistance(name, n) <= 2) {
+        message += "; did you mean " + Quoted(n) + "?";
+        library.Fail(message);
+      }
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    message += known.empty() ? "; no library found (looked in " + dirs.front().string() + " …)"
+                             : "; the library has: " + known;
+    library.Fail(message);
+  }
+  const LibraryMaterial entry = ReadLibraryMaterial(*file);
+  const fs::path library_dir = file->parent_path();
+  Material own;
+  {
+    BaseDirectory in_library(base_, library_dir);
+    try {
+      own = ReadMaterial(JsonCursor(*entry.material, ""));
+    } catch (const SceneError& e) {
+      throw SceneError(file->string() + ": material" + (e.where().empty() ? "" : "." + e.where()),
+                       e.message());
+    }
+  }
+  nlohmann::json merged = *entry.material;
+  for (const auto& [key, value] : c.value().items()) {
+    if (key == "library") continue;
+    const auto it = LibraryOverrides().find(key);
+    if (it == LibraryOverrides().end()) continue;  // ReadMaterial names it below
+    for (const auto& replaced : it->second) merged.erase(replaced);
+  }
+  for (const auto& [key, value] : c.value().items())
+    if (key != "library") merged[key] = value;
+  const bool own_bending = !c.Has("bending");
+  Material m;
+  {
+    BaseDirectory bending_files(base_, own_bending ? library_dir : base_);
+    m = ReadMaterial(JsonCursor(merged, c.path()));
+  }
+  if (own_bending) {
+    auto absolute = [&](BendingLaw& law) {
+      if (auto* curve = std::get_if<CurveBending>(&law); curve && !curve->file.empty())
+        if (fs::path(curve->file).is_relative())
+          curve->file = fs::absolute(library_dir / curve->file).lexically_normal().string();
+    };
+    absolute(m.bending.warp);
+    if (m.bending.weft) absolute(*m.bending.weft);
+  }
+  return m;
+}
+
 Material SceneParser::ReadMaterial(const JsonCursor& c) {
-  c.ExpectObject({"thickness",
+  c.ExpectObject({"library",
+                  "thickness",
                   "areal_weight",
                   "areal_density",
                   "youngs_modulus",
@@ -316,9 +416,11 @@ BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c) {
     return law;
   }
 
-  c.ExpectObject({"model", "points", "file", "moment_unit", "curvature_unit"});
+  c.ExpectObject({"model", "points", "file", "moment_unit", "curvature_unit", "branch", "columns"});
   CurveBending law;
   if (c.OneOf({"points", "file"}) == 0) {
+    for (auto key : {"branch", "columns"})
+      if (c.Has(key)) c[key].Fail("applies only to a Kawabata 'file'");
     auto points = c["points"];
     for (const auto& p : points.Items()) {
       auto km = p.Items(2);
@@ -331,11 +433,25 @@ BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c) {
         points.Items()[i].Fail("curvatures must increase from point to point");
   } else {
     law.file = ReadFileReference(c["file"]);
-    // The measured points, averaged over loading and unloading (FORMAT.md);
-    // a bad file is a scene error at this key, with its own line number.
+    KawabataOptions options;
+    if (auto b = c.Find("branch")) {
+      const int branch = b->Choice({"average", "loading", "unloading"});
+      law.branch = b->String();
+      options.branch = branch == 0   ? KawabataBranch::kAverage
+                       : branch == 1 ? KawabataBranch::kLoading
+                                     : KawabataBranch::kUnloading;
+    }
+    if (auto columns = c.Find("columns")) {
+      auto names = columns->Items(2);
+      law.curvature_column = options.curvature_column = names[0].String();
+      law.moment_column = options.moment_column = names[1].String();
+    }
+    // The measured points, by default averaged over loading and unloading
+    // (FORMAT.md); a bad file is a scene error at this key, with its own
+    // line number.
     const fs::path file(law.file);
     try {
-      const KawabataCurve curve = ReadKawabata(file.is_absolute() ? file : base_ / file);
+      const KawabataCurve curve = ReadKawabata(file.is_absolute() ? file : base_ / file, options);
       for (size_t i = 0; i < curve.curvature.size(); ++i)
         law.points.push_back({curve.curvature[i], curve.moment[i]});
     } catch (const KawabataError& e) {

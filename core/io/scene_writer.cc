@@ -62,6 +62,9 @@ json ToJson(const BendingLaw& law) {
                             j["curvature_unit"] = "1/m";
                           } else {
                             j["file"] = c.file;
+                            if (c.branch != "average") j["branch"] = c.branch;
+                            if (!c.curvature_column.empty() || !c.moment_column.empty())
+                              j["columns"] = {c.curvature_column, c.moment_column};
                           }
                           return j;
                         },

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/mechanics/moment_curvature.h"
+
 namespace drape {
 
 PolynomialFit FitOddPolynomial(const std::vector<double>& curvature,
@@ -47,6 +49,59 @@ PolynomialFit FitOddPolynomial(const std::vector<double>& curvature,
   fit.rms_error = std::sqrt(residual.squaredNorm() / n);
   fit.coefficients.resize(degree);
   for (int k = 0; k < degree; ++k) fit.coefficients[k] = scaled(k) / std::pow(fit.valid_to, k + 1);
+  return fit;
+}
+
+CurveFit FitMonotoneCurve(const std::vector<double>& curvature,
+                          const std::vector<double>& moment,
+                          int knots) {
+  if (knots < 2 || knots > 50)
+    throw std::invalid_argument("the number of knots must be 2 to 50, got " +
+                                std::to_string(knots));
+  // The same checks and folding as the polynomial fit; its range is ours.
+  const PolynomialFit line = FitOddPolynomial(curvature, moment, 1);
+  CurveFit fit;
+  fit.range = line.range;
+  fit.valid_to = line.valid_to;
+  const int n = static_cast<int>(curvature.size());
+  std::vector<double> x(n), y(n);
+  for (int i = 0; i < n; ++i) {
+    x[i] = std::abs(curvature[i]);
+    y[i] = curvature[i] < 0 ? -moment[i] : moment[i];
+  }
+  const double spacing = fit.valid_to / knots;
+  // A local quadratic, not a line: a line through a curved law is biased by
+  // f''·(spread of the window)/2, which near K = 0 of a stiff-then-softening
+  // fabric is a percent of the moment.
+  for (int j = 1; j <= knots; ++j) {
+    const double at = j * spacing;
+    // The last knot sees data on one side only: twice the reach.
+    const double window = (j == knots ? 3.0 : 1.5) * spacing;
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (int i = 0; i < n; ++i) {
+      const double d = (x[i] - at) / window;
+      const double w = 1 - std::abs(d);
+      if (w <= 0) continue;
+      ++count;
+      const Eigen::Vector3d basis(1, d, d * d);
+      normal += w * basis * basis.transpose();
+      rhs += w * y[i] * basis;
+    }
+    const Eigen::LDLT<Eigen::Matrix3d> solve(normal);
+    if (count < 3 || solve.info() != Eigen::Success || !(solve.rcond() > 1e-10))
+      throw std::invalid_argument("fewer than 3 distinct points within " + std::to_string(window) +
+                                  " of K = " + std::to_string(at) + "; use fewer knots");
+    fit.points.push_back({at, solve.solve(rhs)(0)});
+  }
+  const auto law = MakeCurveLaw(fit.points);
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double r = law->Moment(curvature[i]) - moment[i];
+    sum += r * r;
+  }
+  fit.rms_error = std::sqrt(sum / n);
   return fit;
 }
 

@@ -25,4 +25,23 @@ PolynomialFit FitOddPolynomial(const std::vector<double>& curvature,
                                const std::vector<double>& moment,
                                int degree);
 
+struct CurveFit {
+  std::vector<std::array<double, 2>> points;  // [K, M] knots, K > 0 ascending (0 implied)
+  double rms_error = 0;                       // of the monotone curve through them
+  std::array<double, 2> range{0, 0};          // smallest and largest K fitted
+  double valid_to = 0;                        // largest |K| fitted
+};
+
+// A monotone spline for the `curve` law that smooths measurement noise:
+// `knots` evenly spaced curvatures K_j = j K_max/knots (j = 1 … knots), the
+// moment at each from a local least-squares line through the points within
+// one knot spacing (tent weights), and MakeCurveLaw's Fritsch–Carlson cubic
+// through (0, 0) and them. Data of both signs are folded as for the
+// polynomial. Throws std::invalid_argument for knots outside 2 … 50, a
+// knot with fewer than 2 points near it, sizes that differ, or non-finite
+// values.
+CurveFit FitMonotoneCurve(const std::vector<double>& curvature,
+                          const std::vector<double>& moment,
+                          int knots);
+
 }  // namespace drape

@@ -74,8 +74,12 @@ struct PolynomialBending {
   friend bool operator==(const PolynomialBending&, const PolynomialBending&) = default;
 };
 struct CurveBending {
-  std::vector<Vec2> points;  // [K, M] pairs, SI; empty when `file` is given
+  std::vector<Vec2> points;  // [K, M] pairs, SI; from `file` when one is given
   std::string file;          // a Kawabata CSV/TSV, relative to the scene file
+  // Of the file: which branch ("average", "loading", "unloading") and which
+  // columns (header names; empty = found by name).
+  std::string branch = "average";
+  std::string curvature_column, moment_column;
   friend bool operator==(const CurveBending&, const CurveBending&) = default;
 };
 using BendingLaw = std::variant<LinearBending, PolynomialBending, CurveBending>;

@@ -1,7 +1,9 @@
-// `drape material fit`: what it prints is a scene's `bending` object.
+// `drape material fit`: what it prints is a scene's `bending` object;
+// `drape material list`: the library a scene can name.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <variant>
@@ -65,6 +67,60 @@ TEST(MaterialFitCli, BadFileExitsOneWithTheLine) {
   const test::CommandResult degree =
       test::RunDrape("material fit '" + kCottonCsv + "' --degree 12");
   EXPECT_NE(degree.exit_code, 0);
+}
+
+TEST(MaterialFitCli, SplineJsonIsASceneCurveThroughThePapersLaw) {
+  const test::CommandResult r =
+      test::RunDrape("material fit '" + kCottonCsv + "' --model spline --knots 10 --json",
+                     test::Captured::kStdout);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const json bending = json::parse(r.output);
+  EXPECT_EQ(bending["model"], "curve");
+  ASSERT_EQ(bending["points"].size(), 10u);
+  // Knot 4 is K = 1 1/cm, where the paper's law gives Σ cₖ and the file's
+  // 0.1-spaced points are that law; a local quadratic over ±0.375 1/cm
+  // misses only its K⁴, K⁵ terms there (measured: 1.3e-4 gf·cm/cm).
+  EXPECT_DOUBLE_EQ(bending["points"][3][0].get<double>(), 1.0);
+  EXPECT_NEAR(
+      bending["points"][3][1].get<double>(), 1.33387 - 2.23070 + 2.36510 - 1.08471 + 0.17876, 1e-3);
+  json scene = json::parse(std::ifstream(test::ScenesDir() / "rod-drape-nonlinear.json"));
+  json law = bending;
+  law.erase("rms_error");
+  law.erase("range");
+  scene["material"]["bending"] = law;
+  const Scene read = SceneFromJson(scene, test::ScenesDir());
+  EXPECT_EQ(std::get<CurveBending>(read.material.bending.warp).points.size(), 10u);
+}
+
+TEST(MaterialFitCli, WarnsOfAFitThatSoftensInsideItsRange) {
+  // M = K − 0.3 K³: dM/dK = 1 − 0.9 K² < 0 beyond K = 1/√0.9 = 1.0541 1/cm.
+  const std::filesystem::path soft = std::filesystem::temp_directory_path() / "drape-soft.csv";
+  {
+    std::ofstream out(soft);
+    out << "curvature (1/cm),moment (gf*cm/cm)\n";
+    for (int i = 0; i <= 25; ++i)
+      out << 0.1 * i << "," << 0.1 * i - 0.3 * std::pow(0.1 * i, 3) << "\n";
+  }
+  const test::CommandResult r = test::RunDrape("material fit '" + soft.string() + "' --degree 3");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: the fitted moment falls with curvature (dM/dK < 0) for K from "
+                          "1.054 to 2.5 1/cm"),
+            std::string::npos)
+      << r.output;
+  std::filesystem::remove(soft);
+}
+
+TEST(MaterialListCli, ListsTheShippedLibraryWithSources) {
+  const test::CommandResult r = test::RunDrape("material list --json", test::Captured::kStdout);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const json list = json::parse(r.output);
+  ASSERT_GE(list.size(), 3u);
+  bool cotton = false;
+  for (const auto& entry : list) {
+    EXPECT_FALSE(entry["source"].get<std::string>().empty()) << entry.dump();
+    cotton = cotton || entry["library"] == "cotton-twill";
+  }
+  EXPECT_TRUE(cotton) << r.output;
 }
 
 }  // namespace

@@ -320,6 +320,31 @@ TEST(RunCliOutput, VerbosePrintsTheFullReport) {
   EXPECT_EQ(r.output.find('\r'), std::string::npos) << r.output;
 }
 
+// A measured law that softens inside its range runs, with the warning on
+// stderr and in result.json; the summary line gives the curvature reached.
+TEST(RunCliOutput, SofteningBendingLawIsWarnedOf) {
+  TempDir dir("softening");
+  json doc = BlockDrape(10);
+  // M = K − K³/6.75 (gf·cm/cm, 1/cm): dM/dK < 0 beyond 1.5 1/cm, fit to 2.5.
+  doc["material"]["bending"] = {{"model", "polynomial"},
+                                {"coefficients", {1.0, 0.0, -1.0 / 6.75}},
+                                {"moment_unit", "gf*cm/cm"},
+                                {"curvature_unit", "1/cm"},
+                                {"valid_to", "2.5 1/cm"}};
+  const fs::path scene = WriteJson(doc, dir / "scene.json");
+  const CommandResult r = RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"), true);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string warning =
+      "material.bending: the moment falls with curvature (dM/dK < 0) for K from 1.5 to 2.5 1/cm";
+  EXPECT_NE(r.output.find("  warning: " + warning), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("largest curvature"), std::string::npos) << r.output;
+  const json result = ReadJson(dir / "out" / "result.json");
+  ASSERT_EQ(result["warnings"].size(), 1u);
+  EXPECT_EQ(result["warnings"][0].get<std::string>().rfind(warning, 0), 0u);
+  EXPECT_EQ(result["bending"]["valid_to"], 250.0);
+  EXPECT_GT(result["bending"]["max_curvature"].get<double>(), 0.0);
+}
+
 // The other side of NoProgressLineWithoutATerminal: with stderr on a
 // pseudo-terminal the progress line is drawn with '\r' and cleared at the end.
 TEST(RunCliOutput, ProgressLineOnATerminal) {
