@@ -3,11 +3,20 @@
 // 1 invalid input, 2 solver failure, 130 cancelled).
 #pragma once
 
+#include <filesystem>
 #include <functional>
+#include <memory>
+
+#include "core/solve/step_state.h"
 
 namespace CLI {
 class App;
 }
+
+namespace drape {
+struct Scene;
+struct ShellModel;
+}  // namespace drape
 
 namespace drape::app {
 
@@ -17,7 +26,20 @@ using CommandRunner = std::function<int()>;
 void AddValidateCommand(CLI::App& app, CommandRunner& runner);
 // Adds `run SCENE -o DIR [--quiet] [--verbose] [--threads N]`.
 void AddRunCommand(CLI::App& app, CommandRunner& runner);
-// Adds `material fit FILE [--degree N] [--branch B] [--json]`.
+// Adds `material fit FILE …` and `material list`.
 void AddMaterialCommand(CLI::App& app, CommandRunner& runner);
+// Adds `render INPUT -o PNG …` and `animate RESULT -o MOVIE …` (need VTK).
+void AddRenderCommands(CLI::App& app, CommandRunner& runner);
+// Adds `export RESULT -o DIR --format …` (needs VTK).
+void AddExportCommand(CLI::App& app, CommandRunner& runner);
+
+// For `run --render-every N`: an observer that renders every `every`-th
+// converged step to `directory`/step_NNNN.png (1280 × 720, iso), the camera
+// fitted to the part and its grippers' paths. Throws std::runtime_error when
+// nothing can be rendered (no display, no renderer in this build).
+StepObserver MakeRenderObserver(const Scene& scene,
+                                const ShellModel& model,
+                                const std::filesystem::path& directory,
+                                int every);
 
 }  // namespace drape::app

@@ -14,6 +14,10 @@ int main(int argc, char** argv) {
   drape::app::AddValidateCommand(app, runner);
   drape::app::AddRunCommand(app, runner);
   drape::app::AddMaterialCommand(app, runner);
+#ifdef DRAPE_WITH_RENDER
+  drape::app::AddRenderCommands(app, runner);
+  drape::app::AddExportCommand(app, runner);
+#endif
 
   try {
     app.parse(argc, argv);

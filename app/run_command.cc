@@ -25,6 +25,7 @@ struct RunArgs {
   bool quiet = false;
   bool verbose = false;
   int threads = 0;
+  int render_every = 0;
 };
 
 CancellationToken* g_cancel = nullptr;
@@ -132,7 +133,17 @@ int RunRun(const RunArgs& args) {
     last_pivots = s.negative_pivots;
     return StepDecision::kContinue;
   };
-  SolveSummary summary = solver->Solve({record}, &cancel);
+  std::vector<StepObserver> observers = {record};
+  if (args.render_every > 0) {
+    try {
+      observers.push_back(MakeRenderObserver(
+          scene, solver->model(), writer->directory() / "frames", args.render_every));
+    } catch (const std::exception& e) {
+      std::cerr << "drape run: --render-every: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  SolveSummary summary = solver->Solve(observers, &cancel);
   progress.Clear();
   try {
     writer->Finish(summary);
@@ -157,6 +168,15 @@ int RunRun(const RunArgs& args) {
 
 }  // namespace
 
+#ifndef DRAPE_WITH_RENDER
+StepObserver MakeRenderObserver(const Scene&,
+                                const ShellModel&,
+                                const std::filesystem::path&,
+                                int) {
+  throw std::runtime_error("this build of drape has no renderer (built without VTK)");
+}
+#endif
+
 void AddRunCommand(CLI::App& app, CommandRunner& runner) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Solve a scene and write its result folder");
@@ -166,6 +186,10 @@ void AddRunCommand(CLI::App& app, CommandRunner& runner) {
   cmd->add_flag("-v,--verbose", args->verbose, "Print the full solve report");
   cmd->add_option("--threads", args->threads, "Threads for assembly (0: all cores)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--render-every",
+                  args->render_every,
+                  "Render every N-th converged step to DIR/frames/step_NNNN.png while solving")
+      ->check(CLI::PositiveNumber);
   cmd->callback([args, &runner] { runner = [args] { return RunRun(*args); }; });
 }
 

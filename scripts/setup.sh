@@ -13,6 +13,9 @@ DRAPE_PACKAGES=(
   nlohmann-json3-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # rendering (ui/render): VTK through X; ffmpeg encodes MP4/GIF (and its
+  # ffprobe checks them in the tests)
+  libvtk9-dev libx11-dev ffmpeg
   # headless display for render and GUI tests
   xvfb xauth
 )

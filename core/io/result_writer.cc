@@ -11,6 +11,20 @@
 namespace drape {
 namespace {
 
+// The scene a result carries must read back without the files it named:
+// measured curves keep their points (SI), meshes their absolute paths.
+Scene SelfContained(Scene scene) {
+  auto embed = [](BendingLaw& law) {
+    if (auto* curve = std::get_if<CurveBending>(&law)) curve->file.clear();
+  };
+  embed(scene.material.bending.warp);
+  if (scene.material.bending.weft) embed(*scene.material.bending.weft);
+  for (auto& obstacle : scene.obstacles)
+    if (auto* mesh = std::get_if<MeshShape>(&obstacle.shape); mesh && !mesh->resolved_path.empty())
+      mesh->file = mesh->resolved_path;
+  return scene;
+}
+
 using json = nlohmann::ordered_json;
 
 json Vector(const Eigen::Vector3d& v) {
@@ -60,7 +74,7 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
   // A result folder reused from an earlier run must not describe two runs at
   // once: the old result goes before the new one starts.
   std::filesystem::remove(directory / kResultFileName, ec);
-  impl_->scene_resolved = SceneToJson(scene);
+  impl_->scene_resolved = SceneToJson(SelfContained(scene));
   impl_->scene_name = scene.name;
   impl_->nodes = model.NodeCount();
   impl_->elements = model.mesh.ElementCount();

@@ -299,6 +299,18 @@ std::array<Eigen::Vector3d, 4> BendingStrains(const ShellElementReference& ref,
   return strains;
 }
 
+std::array<Eigen::Vector3d, 4> MembraneStrains(const ShellElementReference& ref,
+                                               const NodeColumns& x) {
+  std::array<Eigen::Vector3d, 4> strains;
+  for (int p = 0; p < 4; ++p) {
+    const auto& gp = ref.gauss[p];
+    const Eigen::Matrix<double, 3, 2> f = x * gp.dn;
+    const Eigen::Matrix2d eps = 0.5 * (f.transpose() * f - gp.metric0);
+    strains[p] = Eigen::Vector3d(eps(0, 0), eps(1, 1), 2 * eps(0, 1));
+  }
+  return strains;
+}
+
 void EvaluateShellElement(const ShellElementReference& ref,
                           const ShellSection& section,
                           const ShellElementState& state,

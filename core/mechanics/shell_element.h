@@ -82,4 +82,9 @@ std::array<Eigen::Vector3d, 4> BendingStrains(const ShellElementReference& refer
                                               const NodeColumns& positions,
                                               const NodeColumns& directors);
 
+// The membrane (Green–Lagrange) strains ε = (ε₁₁, ε₂₂, 2ε₁₂) at the four
+// Gauss points, in the material frame.
+std::array<Eigen::Vector3d, 4> MembraneStrains(const ShellElementReference& reference,
+                                               const NodeColumns& positions);
+
 }  // namespace drape

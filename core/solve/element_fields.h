@@ -2,6 +2,13 @@
 // reports and colour fields (the solver itself does not need them).
 #pragma once
 
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "core/solve/shell_model.h"
 #include "core/solve/shell_state.h"
 
@@ -10,5 +17,31 @@ namespace drape {
 // The largest principal bending curvature |κ| over every Gauss point [1/m]:
 // how far a fold has taken the material along its bending law.
 double MaxPrincipalCurvature(const ShellModel& model, const ShellState& state);
+
+// What a colour field shows.
+enum class FieldKind {
+  kDisplacement,    // |φ − φ₀| per node [m]
+  kCurvature,       // largest principal |κ| per element [1/m]
+  kBendingMoment,   // largest principal |m| per element [N·m/m]
+  kMembraneStrain,  // largest principal |ε| per element (Green–Lagrange) [–]
+  kElementEnergy,   // strain energy per reference area per element [J/m²]
+  kContactPressure  // normal contact force per node area [Pa]
+};
+
+struct FieldInfo {
+  FieldKind kind;
+  const char* name;   // as on the command line: "curvature"
+  const char* title;  // as on a colour bar: "curvature [1/m]"
+  bool per_node;      // else per element
+};
+
+// Every field, in the order the help lists them.
+const std::vector<FieldInfo>& Fields();
+// The field named `name`, or nullopt.
+std::optional<FieldInfo> FindField(std::string_view name);
+
+// The values of a field other than contact pressure (which the contact
+// model reports: ContactReport::pressure): one per node or per element.
+Eigen::VectorXd EvaluateField(FieldKind kind, const ShellModel& model, const ShellState& state);
 
 }  // namespace drape

@@ -1,0 +1,314 @@
+// `drape render INPUT -o image.png` and `drape animate RESULT -o movie`:
+// offscreen pictures of a run (or a scene's reference state) with the
+// renderer the workbench uses (ui/render).
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "app/commands.h"
+#include "app/run_input.h"
+#include "core/mechanics/director.h"
+#include "core/model/scene_error.h"
+#include "ui/render/display.h"
+#include "ui/render/frame_renderer.h"
+#include "ui/render/video_encoder.h"
+
+namespace drape::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The options both commands share.
+struct ViewArgs {
+  std::string size = "1280x720";
+  std::string field;
+  std::string camera = "iso";
+  std::vector<double> position, focal_point, view_up;
+  bool edges = false, thickness = false, no_floor = false, no_paths = false, no_overlay = false;
+
+  void AddTo(CLI::App* cmd) {
+    cmd->add_option("--size", size, "Image size WIDTHxHEIGHT in pixels")->capture_default_str();
+    std::string fields;
+    for (const auto& f : Fields()) fields += std::string(fields.empty() ? "" : ", ") + f.name;
+    cmd->add_option("--field", field, "Colour the fabric by a field: " + fields);
+    cmd->add_option("--camera", camera, "View: iso, front, top or side")->capture_default_str();
+    cmd->add_option("--camera-position", position, "Explicit camera position x,y,z [m]")
+        ->expected(3)
+        ->delimiter(',');
+    cmd->add_option("--focal-point", focal_point, "Explicit focal point x,y,z [m]")
+        ->expected(3)
+        ->delimiter(',');
+    cmd->add_option("--view-up", view_up, "Explicit view-up direction x,y,z")
+        ->expected(3)
+        ->delimiter(',');
+    cmd->add_flag("--edges", edges, "Draw the mesh lines");
+    cmd->add_flag("--thickness", thickness, "Draw both faces of the fabric, h apart");
+    cmd->add_flag("--no-floor", no_floor, "No floor grid");
+    cmd->add_flag("--no-paths", no_paths, "No gripper paths");
+    cmd->add_flag("--no-overlay", no_overlay, "No text overlay");
+  }
+
+  RenderOptions Options() const {
+    RenderOptions o;
+    std::tie(o.width, o.height) = ParseSize(size);
+    if (!field.empty()) {
+      const auto f = FindField(field);
+      if (!f) {
+        std::string names;
+        for (const auto& g : Fields()) names += std::string(names.empty() ? "" : ", ") + g.name;
+        throw std::invalid_argument("--field: unknown field '" + field + "'; expected one of " +
+                                    names);
+      }
+      o.field = f->kind;
+    }
+    if (camera != "iso" && camera != "front" && camera != "top" && camera != "side")
+      throw std::invalid_argument("--camera: unknown view '" + camera +
+                                  "'; expected iso, front, top or side");
+    o.camera.view = camera;
+    auto vec = [](const std::vector<double>& v) -> std::optional<Eigen::Vector3d> {
+      if (v.size() != 3) return std::nullopt;
+      return Eigen::Vector3d(v[0], v[1], v[2]);
+    };
+    o.camera.position = vec(position);
+    o.camera.focal_point = vec(focal_point);
+    o.camera.view_up = vec(view_up);
+    o.edges = edges;
+    o.thickness = thickness;
+    o.floor = !no_floor;
+    o.paths = !no_paths;
+    o.overlay = !no_overlay;
+    return o;
+  }
+};
+
+std::vector<const ShellState*> Pointers(const RunInput& run) {
+  std::vector<const ShellState*> states;
+  for (const auto& s : run.states) states.push_back(&s);
+  return states;
+}
+
+Frame FrameOf(const RunInput& run, size_t i) {
+  Frame f;
+  f.state = &run.states[i];
+  f.step = static_cast<int>(i);
+  f.stage_name = run.stage_names[i];
+  f.lambda = run.lambdas[i];
+  if (i + 1 == run.states.size() && run.is_result) f.contact_pressure = run.final_contact_pressure;
+  return f;
+}
+
+// Every error a rendering command reports: one line, exit 1.
+template <typename Body>
+int Guarded(const char* command, Body body) {
+  const std::string display = DisplayProblem();
+  if (!display.empty()) {
+    std::cerr << "drape " << command << ": " << display << "\n";
+    return 1;
+  }
+  try {
+    return body();
+  } catch (const SceneError& e) {
+    std::cerr << "drape " << command << ": " << e.what() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "drape " << command << ": " << e.what() << "\n";
+  }
+  return 1;
+}
+
+// ---- render ------------------------------------------------------------------
+
+struct RenderArgs {
+  std::string input, output, step = "last";
+  ViewArgs view;
+};
+
+int RunRender(const RenderArgs& args) {
+  return Guarded("render", [&] {
+    const RenderOptions options = args.view.Options();
+    const RunInput run = ReadRunInput(args.input);
+    const size_t i = StepIndex(run, args.step);
+    FrameRenderer renderer(run.scene, run.model, options, RunBounds(run.scene, Pointers(run)));
+    renderer.Show(FrameOf(run, i));
+    renderer.WritePng(args.output);
+    return 0;
+  });
+}
+
+// ---- animate -----------------------------------------------------------------
+
+std::atomic<bool> g_interrupted{false};
+void OnInterrupt(int) {
+  g_interrupted = true;
+}
+
+struct AnimateArgs {
+  std::string input, output;
+  double fps = 25;
+  double duration = 0;
+  ViewArgs view;
+};
+
+// The state at "step time" s ∈ [0, n − 1] between the recorded states:
+// positions and obstacle translations interpolated linearly, directors
+// normalised, obstacle rotations by quaternion slerp.
+ShellState Interpolated(const RunInput& run, double s) {
+  const size_t last = run.states.size() - 1;
+  const size_t a = std::min(static_cast<size_t>(std::floor(s)), last);
+  const size_t b = std::min(a + 1, last);
+  const double w = std::clamp(s - static_cast<double>(a), 0.0, 1.0);
+  const ShellState& sa = run.states[a];
+  const ShellState& sb = run.states[b];
+  ShellState out;
+  out.positions = (1 - w) * sa.positions + w * sb.positions;
+  out.rotations.resize(sa.rotations.size());
+  for (size_t n = 0; n < sa.rotations.size(); ++n) {
+    Eigen::Vector3d t = (1 - w) * sa.rotations[n].col(2) + w * sb.rotations[n].col(2);
+    if (t.norm() < 1e-12) t = sb.rotations[n].col(2);
+    out.rotations[n] = RotationFromDirector(t.normalized());
+  }
+  out.obstacles = sa.obstacles;
+  for (size_t o = 0; o < out.obstacles.size() && o < sb.obstacles.size(); ++o) {
+    const Eigen::Quaterniond qa(sa.obstacles[o].rotation), qb(sb.obstacles[o].rotation);
+    out.obstacles[o].rotation = qa.slerp(w, qb).toRotationMatrix();
+    out.obstacles[o].translation =
+        (1 - w) * sa.obstacles[o].translation + w * sb.obstacles[o].translation;
+  }
+  return out;
+}
+
+int RunAnimate(const AnimateArgs& args) {
+  return Guarded("animate", [&]() -> int {
+    if (!(args.fps > 0 && args.fps <= 120))
+      throw std::invalid_argument("--fps: must lie in (0, 120], got " + std::to_string(args.fps));
+    if (args.duration < 0) throw std::invalid_argument("--duration: must be positive");
+    const RenderOptions options = args.view.Options();
+    const RunInput run = ReadRunInput(args.input);
+    if (!run.is_result)
+      throw std::invalid_argument(args.input + ": a scene has one state; animate a result folder");
+    std::optional<std::array<double, 2>> range;
+    if (options.field)
+      range = FieldRange(*options.field, run.model, Pointers(run), run.final_contact_pressure);
+    if (options.field && *options.field == FieldKind::kContactPressure)
+      throw std::invalid_argument(
+          "--field pressure: contact pressure is stored for the last step only; render that step");
+    FrameRenderer renderer(
+        run.scene, run.model, options, RunBounds(run.scene, Pointers(run)), range);
+    const size_t states = run.states.size();
+    const int frames = args.duration > 0
+                           ? std::max(2, static_cast<int>(std::lround(args.duration * args.fps)))
+                           : static_cast<int>(states);
+    auto sink = OpenFrameSink(args.output, options.width, options.height, args.fps);
+
+    g_interrupted = false;
+    std::signal(SIGINT, OnInterrupt);
+    std::signal(SIGTERM, OnInterrupt);
+    const bool terminal = isatty(STDERR_FILENO);
+    const auto start = std::chrono::steady_clock::now();
+    int done = 0;
+    for (; done < frames && !g_interrupted; ++done) {
+      if (args.duration > 0) {
+        const double s = static_cast<double>(done) / (frames - 1) * static_cast<double>(states - 1);
+        const ShellState state = Interpolated(run, s);
+        const size_t near = std::min(static_cast<size_t>(std::lround(s)), states - 1);
+        Frame f = FrameOf(run, near);
+        f.state = &state;
+        f.contact_pressure.clear();
+        renderer.Show(f);
+      } else {
+        Frame f = FrameOf(run, static_cast<size_t>(done));
+        f.contact_pressure.clear();
+        renderer.Show(f);
+      }
+      sink->Add(renderer.CaptureRgb());
+      if (terminal) {
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double eta = elapsed / (done + 1) * (frames - done - 1);
+        std::fprintf(
+            stderr, "\r\033[K  frame %d/%d, %.1f s, ETA %.1f s", done + 1, frames, elapsed, eta);
+      }
+    }
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (terminal) std::fprintf(stderr, "\r\033[K");
+    if (g_interrupted) {
+      sink->Abort();
+      std::cerr << "drape animate: cancelled after " << done << " of " << frames
+                << " frames; no movie written\n";
+      return 130;
+    }
+    sink->Finish();
+    std::cerr << "  " << frames << " frames at " << args.fps << " fps: " << args.output << "\n";
+    return 0;
+  });
+}
+
+}  // namespace
+
+StepObserver MakeRenderObserver(const Scene& scene,
+                                const ShellModel& model,
+                                const fs::path& directory,
+                                int every) {
+  const std::string display = DisplayProblem();
+  if (!display.empty()) throw std::runtime_error(display);
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw std::runtime_error("cannot create " + directory.string() + ": " + ec.message());
+  // The run is not known yet: fit the camera to the part and where its
+  // grippers will take it.
+  Eigen::AlignedBox3d bounds = RunBounds(scene, {&model.reference});
+  for (const auto& path : GripperPathPoints(scene, model)) bounds.extend(path);
+  auto renderer = std::make_shared<FrameRenderer>(scene, model, RenderOptions{}, bounds);
+  return [renderer, directory, every](const StepState& s) {
+    if (s.step % every != 0) return StepDecision::kContinue;
+    Frame f;
+    f.state = &s.state;
+    f.step = s.step;
+    f.stage_name = s.stage_name;
+    f.lambda = s.lambda;
+    renderer->Show(f);
+    char name[64];
+    std::snprintf(name, sizeof name, "step_%04d.png", s.step);
+    renderer->WritePng(directory / name);
+    return StepDecision::kContinue;
+  };
+}
+
+void AddRenderCommands(CLI::App& app, CommandRunner& runner) {
+  auto render = std::make_shared<RenderArgs>();
+  CLI::App* r = app.add_subcommand("render", "Render a step of a result (or a scene) to a PNG");
+  r->add_option("input", render->input, "Result folder, its result.json, or a scene file")
+      ->required();
+  r->add_option("-o,--output", render->output, "PNG file to write")->required();
+  r->add_option("--step", render->step, "Step number, 0 for the reference state, or 'last'")
+      ->capture_default_str();
+  render->view.AddTo(r);
+  r->callback([render, &runner] { runner = [render] { return RunRender(*render); }; });
+
+  auto animate = std::make_shared<AnimateArgs>();
+  CLI::App* a = app.add_subcommand(
+      "animate", "Animate a result: MP4 or GIF (ffmpeg), OGV, or a folder of PNG frames");
+  a->add_option("input", animate->input, "Result folder or its result.json")->required();
+  a->add_option("-o,--output", animate->output, "movie.mp4, movie.gif, movie.ogv, or a folder")
+      ->required();
+  a->add_option("--fps", animate->fps, "Frames per second")->capture_default_str();
+  a->add_option("--duration",
+                animate->duration,
+                "Length in seconds, the run interpolated in time (default: one frame per step)");
+  animate->view.AddTo(a);
+  a->callback([animate, &runner] { runner = [animate] { return RunAnimate(*animate); }; });
+}
+
+}  // namespace drape::app

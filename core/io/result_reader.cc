@@ -1,0 +1,99 @@
+#include "core/io/result_reader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <stdexcept>
+
+#include "core/io/result_writer.h"
+#include "core/io/scene_reader.h"
+#include "core/mechanics/director.h"
+#include "core/model/scene_error.h"
+
+namespace drape {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+[[noreturn]] void Fail(const fs::path& file, const std::string& message) {
+  throw std::runtime_error(file.string() + ": " + message);
+}
+
+ObstaclePlacement PlacementOf(const json& j) {
+  ObstaclePlacement p;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) p.rotation(r, c) = j.at("rotation").at(r).at(c).get<double>();
+    p.translation(r) = j.at("translation").at(r).get<double>();
+  }
+  return p;
+}
+
+}  // namespace
+
+RunRecord ReadRunRecord(const fs::path& path) {
+  std::error_code ec;
+  const fs::path file = fs::is_directory(path, ec) ? path / kResultFileName : path;
+  std::ifstream in(file);
+  if (!in) Fail(file, "cannot open the result (expected a result folder or its result.json)");
+  json r;
+  try {
+    r = json::parse(in);
+  } catch (const json::exception& e) {
+    Fail(file, std::string("not valid JSON: ") + e.what());
+  }
+  if (!r.is_object() || !r.contains("drape_result"))
+    Fail(file, "not a Drape Studio result (no 'drape_result' key)");
+  RunRecord record;
+  record.directory = file.parent_path();
+  try {
+    record.status = r.value("status", "");
+    record.message = r.value("message", "");
+    record.scene = SceneFromJson(r.at("scene_resolved"), record.directory);
+    const StateFile states =
+        ReadStateFile(record.directory / r.value("states_file", kStatesFileName));
+    record.mesh = states.mesh;
+    record.states = states.steps;
+    std::vector<std::string> obstacle_names;
+    for (const auto& o : record.scene.obstacles) obstacle_names.push_back(o.name);
+    for (const auto& s : r.at("steps")) {
+      RecordedStep step;
+      step.stage = s.at("stage").get<int>();
+      step.step = s.at("step").get<int>();
+      step.lambda = s.at("lambda").get<double>();
+      if (step.stage >= 0 && step.stage < static_cast<int>(record.scene.stages.size()))
+        step.stage_name = record.scene.stages[step.stage].name;
+      step.obstacles.assign(obstacle_names.size(), ObstaclePlacement{});
+      if (s.contains("obstacles"))
+        for (size_t o = 0; o < obstacle_names.size(); ++o)
+          if (s["obstacles"].contains(obstacle_names[o]))
+            step.obstacles[o] = PlacementOf(s["obstacles"][obstacle_names[o]]);
+      record.steps.push_back(std::move(step));
+    }
+    if (r.contains("final") && r["final"].contains("contact_pressure"))
+      record.final_contact_pressure = r["final"]["contact_pressure"].get<std::vector<double>>();
+  } catch (const SceneError& e) {
+    Fail(file, std::string("scene_resolved: ") + e.what());
+  } catch (const json::exception& e) {
+    Fail(file, std::string("malformed result: ") + e.what());
+  }
+  // A run cut short may have written one more state than result.json lists
+  // (or the reverse); keep the steps both have.
+  const size_t n = std::min(record.states.size(), record.steps.size());
+  record.states.resize(n);
+  record.steps.resize(n);
+  return record;
+}
+
+ShellState StateOf(const RunRecord& record, size_t i) {
+  const StoredStep& s = record.states.at(i);
+  ShellState state;
+  state.positions = s.positions;
+  state.rotations.resize(s.directors.rows());
+  for (int n = 0; n < s.directors.rows(); ++n)
+    state.rotations[n] = RotationFromDirector(s.directors.row(n).transpose());
+  state.obstacles = record.steps.at(i).obstacles;
+  return state;
+}
+
+}  // namespace drape

@@ -1,0 +1,178 @@
+// `drape render`, `drape animate`, `drape export` end to end on a solved
+// strip fold: files of the asked size and frame count (ffprobe), no broken
+// file on failure, one clear message without a display.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/drape_command.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+using test::RunDrape;
+
+// PNG width and height from the IHDR chunk (bytes 16–23, big-endian).
+std::pair<uint32_t, uint32_t> PngSize(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char b[24] = {};
+  in.read(reinterpret_cast<char*>(b), 24);
+  auto be = [&](int i) {
+    return uint32_t(b[i]) << 24 | uint32_t(b[i + 1]) << 16 | uint32_t(b[i + 2]) << 8 | b[i + 3];
+  };
+  return {be(16), be(20)};
+}
+
+// "frames,width,height" of a movie's first video stream, as ffprobe counts.
+std::string Probe(const fs::path& movie) {
+  FILE* pipe = popen(("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                      "stream=nb_read_frames,width,height -of csv=p=0 '" +
+                      movie.string() + "' 2>&1")
+                         .c_str(),
+                     "r");
+  std::string out;
+  char buf[256];
+  while (fgets(buf, sizeof buf, pipe)) out += buf;
+  pclose(pipe);
+  while (!out.empty() && (out.back() == '\n' || out.back() == ',')) out.pop_back();
+  return out;
+}
+
+class RenderCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // One folder per process: CTest runs these tests side by side.
+    dir_ = fs::temp_directory_path() / ("drape-render-cli-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const auto r = RunDrape("run '" + (test::ScenesDir() / "strip-convergence-20.json").string() +
+                            "' -o '" + (dir_ / "fold").string() + "' --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+  static std::string Fold() { return "'" + (dir_ / "fold").string() + "'"; }
+  static std::string Out(const std::string& name) { return "'" + (dir_ / name).string() + "'"; }
+  // Steps of the run, and the reference state: frames of an animation.
+  static int States() {
+    int n = 0;
+    std::ifstream csv(dir_ / "fold" / "steps.csv");
+    std::string line;
+    while (std::getline(csv, line)) ++n;
+    return n;  // header + steps = steps + reference
+  }
+  static fs::path dir_;
+};
+fs::path RenderCli::dir_;
+
+TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
+  const auto r = RunDrape("render " + Fold() + " -o " + Out("last.png") +
+                          " --size 321x203 --field curvature --camera top");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(PngSize(dir_ / "last.png"), std::make_pair(321u, 203u));
+  // A scene renders its reference state.
+  const auto s = RunDrape("render '" + (test::ScenesDir() / "strip-fold.json").string() + "' -o " +
+                          Out("scene.png") + " --step 0 --size 200x100");
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  EXPECT_EQ(PngSize(dir_ / "scene.png"), std::make_pair(200u, 100u));
+}
+
+TEST_F(RenderCli, BadArgumentsAreOneMessageAndExitOne) {
+  auto r = RunDrape("render " + Fold() + " -o " + Out("x.png") + " --step 999");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--step: '999' is not a step of this result"), std::string::npos)
+      << r.output;
+  r = RunDrape("render " + Fold() + " -o " + Out("x.png") + " --field curvatur");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--field: unknown field 'curvatur'"), std::string::npos) << r.output;
+  r = RunDrape("render " + Fold() + " -o " + Out("x.png") + " --size 12x9000");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+  r = RunDrape("render '/no/such/result' -o " + Out("x.png"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("/no/such/result"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+TEST_F(RenderCli, AnimateMp4HasOneFramePerStep) {
+  const auto r = RunDrape("animate " + Fold() + " -o " + Out("fold.mp4") + " --size 320x240");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(Probe(dir_ / "fold.mp4"), "320,240," + std::to_string(States()));
+  EXPECT_FALSE(fs::exists(dir_ / "fold.partial.mp4"));
+}
+
+TEST_F(RenderCli, AnimateGifOgvAndFramesOpen) {
+  auto r = RunDrape("animate " + Fold() + " -o " + Out("fold.gif") +
+                    " --size 160x120 --duration 1.2 --fps 10");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(Probe(dir_ / "fold.gif"), "160,120,12");
+  r = RunDrape("animate " + Fold() + " -o " + Out("fold.ogv") + " --size 160x120");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(Probe(dir_ / "fold.ogv"), "160,120," + std::to_string(States()));
+  r = RunDrape("animate " + Fold() + " -o " + Out("frames") + " --size 160x120");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  int pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "frames"))
+    pngs += e.path().extension() == ".png";
+  EXPECT_EQ(pngs, States());
+  EXPECT_EQ(PngSize(dir_ / "frames" / "frame_0001.png"), std::make_pair(160u, 120u));
+}
+
+TEST_F(RenderCli, InterruptedAnimationLeavesNoMovie) {
+  // A long animation, interrupted once it is under way: exit 130, and
+  // neither the movie nor its partial file remains.
+  const std::string script = "(" + std::string(DRAPE_CLI) + " animate " + Fold() + " -o " +
+                             Out("long.mp4") +
+                             " --size 320x240 --duration 120 --fps 30 & pid=$!; sleep 2; kill -INT "
+                             "$pid; wait $pid; echo exit=$?) 2>&1";
+  FILE* pipe = popen(script.c_str(), "r");
+  std::string out;
+  char buf[512];
+  while (fgets(buf, sizeof buf, pipe)) out += buf;
+  pclose(pipe);
+  EXPECT_NE(out.find("exit=130"), std::string::npos) << out;
+  EXPECT_NE(out.find("cancelled after"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir_ / "long.mp4"));
+  EXPECT_FALSE(fs::exists(dir_ / "long.partial.mp4"));
+}
+
+TEST_F(RenderCli, ExportWritesEveryStepAndACollection) {
+  auto r = RunDrape("export " + Fold() + " -o " + Out("vtu") + " --format vtu");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "vtu" / "run.pvd"));
+  int vtu = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "vtu")) vtu += e.path().extension() == ".vtu";
+  EXPECT_EQ(vtu, States());
+  r = RunDrape("export " + Fold() + " -o " + Out("stl") + " --format stl --step last --solid");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = RunDrape("export " + Fold() + " -o " + Out("bad") + " --format dxf");
+  EXPECT_NE(r.exit_code, 0);
+}
+
+TEST_F(RenderCli, WithoutADisplayRenderingSaysToUseXvfb) {
+  for (const std::string& command : {"render " + Fold() + " -o " + Out("nodisplay.png"),
+                                     "animate " + Fold() + " -o " + Out("nodisplay.mp4")}) {
+    const std::string env_command =
+        "env -u DISPLAY " + std::string(DRAPE_CLI) + " " + command + " 2>&1";
+    FILE* pipe = popen(env_command.c_str(), "r");
+    std::string out;
+    char buf[512];
+    while (fgets(buf, sizeof buf, pipe)) out += buf;
+    const int status = pclose(pipe);
+    EXPECT_TRUE(WIFEXITED(status)) << "killed by a signal: " << out;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << out;
+    EXPECT_NE(out.find("xvfb-run -a"), std::string::npos) << out;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "nodisplay.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "nodisplay.mp4"));
+}
+
+}  // namespace
+}  // namespace drape

@@ -1,0 +1,225 @@
+// Offscreen pictures checked by content, not by pixels: the size, where the
+// fabric projects for a known camera, the colour map's two ends on a bent
+// strip, obstacles and grippers where they are. Runs under xvfb-run -a.
+#include "ui/render/frame_renderer.h"
+
+#include <gtest/gtest.h>
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/mechanics/director.h"
+#include "support/strip_scene.h"
+#include "ui/render/display.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;  // rows from the top
+  std::array<int, 3> At(int x, int y) const {
+    const size_t i = (static_cast<size_t>(y) * width + x) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+// Hue in degrees [0, 360) and saturation [0, 1] of an RGB pixel.
+std::pair<double, double> HueSaturation(const std::array<int, 3>& p) {
+  const double r = p[0] / 255.0, g = p[1] / 255.0, b = p[2] / 255.0;
+  const double hi = std::max({r, g, b}), lo = std::min({r, g, b});
+  if (hi - lo < 1e-9) return {0, 0};
+  double h;
+  if (hi == r)
+    h = 60 * std::fmod((g - b) / (hi - lo), 6.0);
+  else if (hi == g)
+    h = 60 * ((b - r) / (hi - lo) + 2);
+  else
+    h = 60 * ((r - g) / (hi - lo) + 4);
+  if (h < 0) h += 360;
+  return {h, (hi - lo) / hi};
+}
+
+// The fabric's face colour (0.93, 0.62, 0.33), shaded: hue about 29°.
+bool IsFabricFace(const std::array<int, 3>& p) {
+  const auto [h, s] = HueSaturation(p);
+  return s > 0.4 && h > 18 && h < 40;
+}
+
+// Where a world point lands in the picture (rows from the top).
+Eigen::Vector2d Project(FrameRenderer& r, const Eigen::Vector3d& x) {
+  vtkRenderer* ren = r.renderer();
+  ren->SetWorldPoint(x.x(), x.y(), x.z(), 1.0);
+  ren->WorldToDisplay();
+  double d[3];
+  ren->GetDisplayPoint(d);
+  return {d[0], r.height() - 1 - d[1]};
+}
+
+class FrameRendererTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
+  }
+};
+
+// A 20 × 10 cm sheet, flat, seen from the top.
+Scene FlatSheet() {
+  test::StripSpec spec;
+  spec.width = 0.1;
+  Scene scene = test::CantileverStrip(spec);
+  scene.fabric.mesh.elements = std::array<int, 2>{20, 10};
+  scene.probes.clear();
+  return scene;
+}
+
+RenderOptions Bare(int w, int h) {
+  RenderOptions o;
+  o.width = w;
+  o.height = h;
+  o.floor = false;
+  o.paths = false;
+  o.overlay = false;
+  return o;
+}
+
+TEST_F(FrameRendererTest, FlatSheetFromTheTopFillsItsRectangle) {
+  const Scene scene = FlatSheet();
+  const ShellModel model = BuildShellModel(scene);
+  RenderOptions options = Bare(640, 480);
+  options.camera.view = "top";
+  ShellState state = model.reference;
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state}));
+  Frame frame;
+  frame.state = &state;
+  renderer.Show(frame);
+  Image image{640, 480, renderer.CaptureRgb()};
+  ASSERT_EQ(image.rgb.size(), 640u * 480 * 3);
+  // The sheet spans x ∈ [0, 0.2], y ∈ [−0.05, 0.05] at z = 0.
+  const Eigen::Vector2d a = Project(renderer, {0, -0.05, 0});
+  const Eigen::Vector2d b = Project(renderer, {0.2, 0.05, 0});
+  const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x());
+  const double y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
+  std::printf("sheet projects to x %.1f..%.1f, y %.1f..%.1f px\n", x0, x1, y0, y1);
+  EXPECT_GT(x1 - x0, 300);  // fitted: it fills most of the width
+  int inside = 0, inside_fabric = 0, outside = 0, outside_fabric = 0;
+  const double slack = 3;  // pixels: anti-aliasing and the supports' glyphs at the root
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const bool fabric = IsFabricFace(image.At(x, y));
+      if (x > x0 + slack && x < x1 - slack && y > y0 + slack && y < y1 - slack) {
+        ++inside;
+        inside_fabric += fabric;
+      } else if (x < x0 - slack || x > x1 + slack || y < y0 - slack || y > y1 + slack) {
+        ++outside;
+        outside_fabric += fabric;
+      }
+    }
+  // The clamped root's support glyphs cover a strip of the left edge.
+  EXPECT_GT(inside_fabric, 0.97 * inside) << inside_fabric << " of " << inside;
+  EXPECT_EQ(outside_fabric, 0) << "of " << outside;
+}
+
+TEST_F(FrameRendererTest, PngHasTheRequestedSize) {
+  const Scene scene = FlatSheet();
+  const ShellModel model = BuildShellModel(scene);
+  ShellState state = model.reference;
+  FrameRenderer renderer(scene, model, Bare(333, 222), RunBounds(scene, {&state}));
+  Frame frame;
+  frame.state = &state;
+  renderer.Show(frame);
+  const fs::path file = fs::temp_directory_path() / "drape-render-size.png";
+  renderer.WritePng(file);
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 333);
+  EXPECT_EQ(dims[1], 222);
+  fs::remove(file);
+}
+
+TEST_F(FrameRendererTest, CurvatureFieldSpansTheColourMap) {
+  // The strip bent with curvature rising linearly from 0 at the root to
+  // 30 1/m at the tip (θ = 15 s²/L), so both ends of the map must show.
+  test::StripSpec spec;
+  Scene scene = test::CantileverStrip(spec);
+  scene.probes.clear();
+  const ShellModel model = BuildShellModel(scene);
+  ShellState state = model.reference;
+  // Integrate the centre line x(s), z(s) for θ(s) = 15 s²/L finely.
+  for (int i = 0; i < model.NodeCount(); ++i) {
+    const double s_end = model.reference.positions(i, 0);
+    double x = 0, z = 0;
+    const int n = 400;
+    for (int j = 0; j < n; ++j) {
+      const double s = (j + 0.5) * s_end / n;
+      const double th = 15.0 * s * s / spec.length;
+      x += std::cos(th) * s_end / n;
+      z += std::sin(th) * s_end / n;
+    }
+    state.positions(i, 0) = x;
+    state.positions(i, 2) = z;
+    const double th = 15.0 * s_end * s_end / spec.length;
+    state.rotations[i] = RotationFromDirector({-std::sin(th), 0, std::cos(th)});
+  }
+  RenderOptions options = Bare(800, 500);
+  options.field = FieldKind::kCurvature;
+  options.camera.view = "top";  // the strip's face, bent up towards the camera
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state}));
+  Frame frame;
+  frame.state = &state;
+  renderer.Show(frame);
+  Image image{800, 500, renderer.CaptureRgb()};
+  int blue = 0, red = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width * 3 / 4; ++x) {  // left of the colour bar
+      const auto [h, s] = HueSaturation(image.At(x, y));
+      if (s < 0.6) continue;
+      blue += h > 225 && h < 255;
+      red += h < 12 || h > 348;
+    }
+  std::printf("fabric pixels coloured as the map's low end: %d, high end: %d\n", blue, red);
+  EXPECT_GT(blue, 50);
+  EXPECT_GT(red, 50);
+}
+
+TEST_F(FrameRendererTest, ObstaclesAndGrippersAreWhereTheSceneSays) {
+  Scene scene = FlatSheet();
+  // A sphere beside the sheet and a gripper at its far corner.
+  scene.obstacles.push_back({"ball", SphereShape{{0.1, 0.15, 0.0}, 0.03}});
+  scene.grippers.push_back(
+      {"corner", Selection{PointSelection{{0.2, 0.05}}, {}}, Fixity::kPosition});
+  const ShellModel model = BuildShellModel(scene);
+  ShellState state = model.reference;
+  state.obstacles.assign(1, ObstaclePlacement{});
+  RenderOptions options = Bare(640, 480);
+  options.camera.view = "top";
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state}));
+  Frame frame;
+  frame.state = &state;
+  renderer.Show(frame);
+  Image image{640, 480, renderer.CaptureRgb()};
+  // The sphere's centre: the obstacle grey (neutral, lit).
+  const Eigen::Vector2d ball = Project(renderer, {0.1, 0.15, 0.03});
+  const auto [h_ball, s_ball] = HueSaturation(image.At(int(ball.x()), int(ball.y())));
+  EXPECT_LT(s_ball, 0.2) << "hue " << h_ball;
+  EXPECT_FALSE(IsFabricFace(image.At(int(ball.x()), int(ball.y()))));
+  // The gripper's glyph: red, at the corner node.
+  const Eigen::Vector2d grip = Project(renderer, {0.2, 0.05, 0});
+  const auto [h_grip, s_grip] = HueSaturation(image.At(int(grip.x()), int(grip.y())));
+  EXPECT_GT(s_grip, 0.5);
+  EXPECT_TRUE(h_grip < 15 || h_grip > 345) << "hue " << h_grip;
+}
+
+}  // namespace
+}  // namespace drape

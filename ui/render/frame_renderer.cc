@@ -1,0 +1,547 @@
+#include "ui/render/frame_renderer.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkConeSource.h>
+#include <vtkDoubleArray.h>
+#include <vtkGlyph3D.h>
+#include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkPolyLine.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "ui/render/scene_actors.h"
+
+namespace drape {
+namespace {
+
+template <typename T>
+using Ptr = vtkSmartPointer<T>;
+
+// Colours [0, 1]: the fabric's face (director side) and back, held points.
+constexpr double kFront[3] = {0.93, 0.62, 0.33};
+constexpr double kBack[3] = {0.47, 0.36, 0.62};
+constexpr double kBackground[3] = {0.96, 0.97, 0.98};
+constexpr double kObstacle[3] = {0.62, 0.66, 0.70};
+constexpr double kSupport[3] = {0.25, 0.25, 0.28};
+constexpr double kGripper[3] = {0.85, 0.15, 0.15};
+constexpr double kPath[3] = {0.10, 0.45, 0.25};
+
+Ptr<vtkActor> ActorOf(vtkPolyData* data) {
+  auto mapper = Ptr<vtkPolyDataMapper>::New();
+  mapper->SetInputData(data);
+  auto actor = Ptr<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// Points as small spheres, `radius` [m].
+struct Glyphs {
+  Ptr<vtkPoints> points = Ptr<vtkPoints>::New();
+  Ptr<vtkPolyData> data = Ptr<vtkPolyData>::New();
+  Ptr<vtkActor> actor;
+
+  Glyphs(double radius, const double colour[3]) {
+    data->SetPoints(points);
+    auto sphere = Ptr<vtkSphereSource>::New();
+    sphere->SetRadius(radius);
+    sphere->SetThetaResolution(12);
+    sphere->SetPhiResolution(8);
+    auto glyph = Ptr<vtkGlyph3D>::New();
+    glyph->SetInputData(data);
+    glyph->SetSourceConnection(sphere->GetOutputPort());
+    glyph->ScalingOff();
+    auto mapper = Ptr<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(glyph->GetOutputPort());
+    mapper->ScalarVisibilityOff();
+    actor = Ptr<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  }
+  void Place(const std::vector<int>& nodes, const ShellState& state) {
+    points->SetNumberOfPoints(static_cast<vtkIdType>(nodes.size()));
+    for (size_t i = 0; i < nodes.size(); ++i)
+      points->SetPoint(static_cast<vtkIdType>(i),
+                       state.positions(nodes[i], 0),
+                       state.positions(nodes[i], 1),
+                       state.positions(nodes[i], 2));
+    points->Modified();
+    data->Modified();
+  }
+};
+
+Eigen::Vector3d ViewDirection(const std::string& view, Eigen::Vector3d* up) {
+  *up = Eigen::Vector3d::UnitZ();
+  if (view == "front") return {0, -1, 0};
+  if (view == "side") return {1, 0, 0};
+  if (view == "top") {
+    *up = Eigen::Vector3d::UnitY();
+    return {0, 0, 1};
+  }
+  if (view == "iso") return Eigen::Vector3d(1, -1, 0.8).normalized();
+  throw std::invalid_argument("unknown camera view '" + view +
+                              "' (expected iso, front, top or side)");
+}
+
+}  // namespace
+
+struct FrameRenderer::Impl {
+  const Scene& scene;
+  const ShellModel& model;
+  RenderOptions options;
+  Eigen::AlignedBox3d bounds;
+  std::optional<std::array<double, 2>> field_range;
+
+  Ptr<vtkRenderWindow> window = Ptr<vtkRenderWindow>::New();
+  Ptr<vtkRenderer> renderer = Ptr<vtkRenderer>::New();
+  std::vector<Ptr<vtkPolyDataMapper>> fabric_mappers;  // one, or two with thickness
+  std::vector<Ptr<vtkActor>> fabric_actors;
+  Ptr<vtkLookupTable> colours = Ptr<vtkLookupTable>::New();
+  Ptr<vtkScalarBarActor> bar = Ptr<vtkScalarBarActor>::New();
+  std::vector<Ptr<vtkActor>> obstacle_actors;
+  std::unique_ptr<Glyphs> supports, grippers;
+  std::vector<int> support_nodes, gripper_nodes;
+  std::vector<Ptr<vtkCaptionActor2D>> probe_labels;
+  Ptr<vtkTextActor> overlay = Ptr<vtkTextActor>::New();
+
+  Impl(const Scene& s,
+       const ShellModel& m,
+       const RenderOptions& o,
+       const Eigen::AlignedBox3d& b,
+       std::optional<std::array<double, 2>> range)
+      : scene(s), model(m), options(o), bounds(b), field_range(range) {
+    window->SetOffScreenRendering(1);
+    window->SetSize(options.width, options.height);
+    window->AddRenderer(renderer);
+    // No anti-aliasing: in Xvfb's software GL 4× multisampling made a
+    // 1280 × 720 frame of a 20 × 20 sheet 3× slower (80 against 25 ms) and
+    // FXAA added 45 ms.
+    window->SetMultiSamples(0);
+    renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+    renderer->SetTwoSidedLighting(true);
+    const double size = bounds.diagonal().norm();
+    AddFabric();
+    AddObstacles();
+    AddHeldPoints(0.006 * size);
+    if (options.paths) AddPaths(0.012 * size);
+    AddProbes();
+    if (options.floor && !HasPlane()) AddFloor();
+    AddOverlay();
+    PlaceCamera();
+  }
+
+  bool HasPlane() const {
+    for (const auto& o : scene.obstacles)
+      if (std::holds_alternative<PlaneShape>(o.shape)) return true;
+    return false;
+  }
+
+  void AddFabric() {
+    colours->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
+    colours->SetNumberOfTableValues(256);
+    colours->Build();
+    const int layers = options.thickness ? 2 : 1;
+    for (int l = 0; l < layers; ++l) {
+      auto mapper = Ptr<vtkPolyDataMapper>::New();
+      mapper->SetLookupTable(colours);
+      mapper->ScalarVisibilityOff();
+      auto actor = Ptr<vtkActor>::New();
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(kFront[0], kFront[1], kFront[2]);
+      actor->GetProperty()->SetInterpolationToGouraud();
+      actor->GetProperty()->SetSpecular(0.1);
+      if (options.edges) {
+        actor->GetProperty()->EdgeVisibilityOn();
+        actor->GetProperty()->SetEdgeColor(0.2, 0.2, 0.2);
+      }
+      auto back = Ptr<vtkProperty>::New();
+      back->DeepCopy(actor->GetProperty());
+      back->SetColor(kBack[0], kBack[1], kBack[2]);
+      actor->SetBackfaceProperty(back);
+      renderer->AddActor(actor);
+      fabric_mappers.push_back(mapper);
+      fabric_actors.push_back(actor);
+    }
+    if (options.field) {
+      bar->SetLookupTable(colours);
+      bar->SetTitle(FieldInfoOf(*options.field).title);
+      bar->SetNumberOfLabels(5);
+      bar->SetLabelFormat("%-#.3g");
+      bar->SetMaximumWidthInPixels(110);
+      bar->SetPosition(0.83, 0.1);
+      bar->SetPosition2(0.12, 0.8);
+      bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+      bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+      bar->GetTitleTextProperty()->SetFontSize(14);
+      bar->GetLabelTextProperty()->SetFontSize(12);
+      bar->UnconstrainedFontSizeOn();
+      renderer->AddViewProp(bar);
+    }
+  }
+
+  static FieldInfo FieldInfoOf(FieldKind kind) {
+    for (const auto& f : Fields())
+      if (f.kind == kind) return f;
+    throw std::logic_error("field without a name");
+  }
+
+  void AddObstacles() {
+    for (const auto& o : scene.obstacles) {
+      auto actor = ActorOf(ObstacleSurface(o, bounds));
+      actor->GetProperty()->SetColor(kObstacle[0], kObstacle[1], kObstacle[2]);
+      if (std::holds_alternative<PlaneShape>(o.shape)) {
+        // A table: flat, light, with a grid, so the part stands out on it.
+        actor->GetProperty()->LightingOff();
+        actor->GetProperty()->EdgeVisibilityOn();
+        actor->GetProperty()->SetEdgeColor(0.78, 0.80, 0.83);
+        actor->GetProperty()->SetColor(0.90, 0.91, 0.93);
+      }
+      renderer->AddActor(actor);
+      obstacle_actors.push_back(actor);
+    }
+  }
+
+  void AddHeldPoints(double radius) {
+    supports = std::make_unique<Glyphs>(radius, kSupport);
+    grippers = std::make_unique<Glyphs>(1.6 * radius, kGripper);
+    for (const auto& s : model.supports)
+      support_nodes.insert(support_nodes.end(), s.nodes.begin(), s.nodes.end());
+    for (const auto& g : model.grippers)
+      gripper_nodes.insert(gripper_nodes.end(), g.nodes.begin(), g.nodes.end());
+    renderer->AddActor(supports->actor);
+    renderer->AddActor(grippers->actor);
+  }
+
+  void AddPaths(double arrow) {
+    for (const auto& line : GripperPaths(scene, model)) {
+      if (line.size() < 2) continue;
+      auto points = Ptr<vtkPoints>::New();
+      auto polyline = Ptr<vtkPolyLine>::New();
+      polyline->GetPointIds()->SetNumberOfIds(static_cast<vtkIdType>(line.size()));
+      for (size_t i = 0; i < line.size(); ++i) {
+        points->InsertNextPoint(line[i].data());
+        polyline->GetPointIds()->SetId(static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
+      }
+      auto cells = Ptr<vtkCellArray>::New();
+      cells->InsertNextCell(polyline);
+      auto data = Ptr<vtkPolyData>::New();
+      data->SetPoints(points);
+      data->SetLines(cells);
+      auto actor = ActorOf(data);
+      actor->GetProperty()->SetColor(kPath[0], kPath[1], kPath[2]);
+      actor->GetProperty()->SetLineWidth(2.5);
+      renderer->AddActor(actor);
+      // An arrow head at the end, along the last segment: the direction of travel.
+      const Eigen::Vector3d end = line.back();
+      const Eigen::Vector3d dir = (line.back() - line[line.size() - 2]).normalized();
+      auto cone = Ptr<vtkConeSource>::New();
+      cone->SetHeight(arrow);
+      cone->SetRadius(0.4 * arrow);
+      cone->SetResolution(16);
+      const Eigen::Vector3d centre = end - 0.5 * arrow * dir;
+      cone->SetCenter(centre.data());
+      cone->SetDirection(dir.data());
+      cone->Update();
+      auto head = ActorOf(cone->GetOutput());
+      head->GetProperty()->SetColor(kPath[0], kPath[1], kPath[2]);
+      renderer->AddActor(head);
+    }
+  }
+
+  void AddProbes() {
+    for (const auto& probe : model.probes) {
+      auto label = Ptr<vtkCaptionActor2D>::New();
+      label->SetCaption(probe.name.c_str());
+      label->BorderOff();
+      label->LeaderOn();
+      label->ThreeDimensionalLeaderOff();
+      label->SetWidth(0.06);
+      label->SetHeight(0.04);
+      label->GetCaptionTextProperty()->SetColor(0.1, 0.1, 0.1);
+      label->GetCaptionTextProperty()->BoldOff();
+      label->GetCaptionTextProperty()->ItalicOff();
+      label->GetCaptionTextProperty()->ShadowOff();
+      label->GetProperty()->SetColor(0.1, 0.1, 0.1);
+      renderer->AddViewProp(label);
+      probe_labels.push_back(label);
+    }
+  }
+
+  // Below the part and every finite obstacle (a dress form reaches lower
+  // than the scarf on it).
+  void AddFloor() {
+    const Eigen::Vector3d lo = bounds.min(), hi = bounds.max();
+    const double margin = 0.15 * bounds.diagonal().norm();
+    double bottom = lo.z();
+    for (size_t o = 0; o < obstacle_actors.size(); ++o) {
+      const auto& shape = scene.obstacles[o].shape;
+      const auto* cylinder = std::get_if<CylinderShape>(&shape);
+      if (std::holds_alternative<PlaneShape>(shape) || (cylinder && !cylinder->length)) continue;
+      bottom = std::min(bottom, obstacle_actors[o]->GetBounds()[4]);
+    }
+    const double z = bottom - 0.02 * bounds.diagonal().norm();
+    Obstacle floor{"floor", PlaneShape{{0, 0, z}, {0, 0, 1}}};
+    Eigen::AlignedBox3d around(Eigen::Vector3d(lo.x() - margin, lo.y() - margin, z),
+                               Eigen::Vector3d(hi.x() + margin, hi.y() + margin, z));
+    auto actor = ActorOf(ObstacleSurface(floor, around));
+    actor->GetProperty()->SetRepresentationToWireframe();
+    actor->GetProperty()->SetColor(0.80, 0.82, 0.85);
+    actor->GetProperty()->LightingOff();
+    renderer->AddActor(actor);
+  }
+
+  void AddOverlay() {
+    overlay->GetTextProperty()->SetFontSize(16);
+    overlay->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+    overlay->SetDisplayPosition(12, 12);
+    overlay->SetVisibility(options.overlay);
+    renderer->AddViewProp(overlay);
+  }
+
+  void PlaceCamera() {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const Eigen::Vector3d centre = bounds.center();
+    if (options.camera.position || options.camera.focal_point || options.camera.view_up) {
+      const Eigen::Vector3d focal = options.camera.focal_point.value_or(centre);
+      const Eigen::Vector3d position = options.camera.position.value_or(
+          focal + bounds.diagonal().norm() * Eigen::Vector3d(1, -1, 1));
+      const Eigen::Vector3d up = options.camera.view_up.value_or(Eigen::Vector3d::UnitZ());
+      camera->SetFocalPoint(focal.data());
+      camera->SetPosition(position.data());
+      camera->SetViewUp(up.data());
+      renderer->ResetCameraClippingRange();
+      return;
+    }
+    Eigen::Vector3d up;
+    const Eigen::Vector3d direction = ViewDirection(options.camera.view, &up);
+    const Eigen::Vector3d position = centre + direction;
+    camera->SetFocalPoint(centre.data());
+    camera->SetPosition(position.data());
+    camera->SetViewUp(up.data());
+    double b[6] = {bounds.min().x(),
+                   bounds.max().x(),
+                   bounds.min().y(),
+                   bounds.max().y(),
+                   bounds.min().z(),
+                   bounds.max().z()};
+    renderer->ResetCamera(b);  // keeps the direction, fits the run's box
+  }
+
+  void ShowFabric(const Frame& frame) {
+    const ShellState& state = *frame.state;
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> directors = state.Directors();
+    Eigen::VectorXd values;
+    bool per_node = true;
+    if (options.field) {
+      const FieldInfo info = FieldInfoOf(*options.field);
+      per_node = info.per_node;
+      if (*options.field == FieldKind::kContactPressure) {
+        if (static_cast<int>(frame.contact_pressure.size()) != model.NodeCount())
+          throw std::invalid_argument(
+              "the contact pressure is stored for the last step of a run with obstacles only");
+        values =
+            Eigen::Map<const Eigen::VectorXd>(frame.contact_pressure.data(), model.NodeCount());
+      } else {
+        values = EvaluateField(*options.field, model, state);
+      }
+    }
+    for (size_t l = 0; l < fabric_mappers.size(); ++l) {
+      const double offset =
+          fabric_mappers.size() == 1 ? 0.0 : (l == 0 ? 0.5 : -0.5) * model.thickness;
+      auto surface = FabricSurface(model.mesh, state.positions, &directors, offset);
+      if (options.field) {
+        auto scalars = Ptr<vtkDoubleArray>::New();
+        scalars->SetName(FieldInfoOf(*options.field).name);
+        scalars->SetNumberOfValues(values.size());
+        for (Eigen::Index i = 0; i < values.size(); ++i) scalars->SetValue(i, values(i));
+        if (per_node)
+          surface->GetPointData()->SetScalars(scalars);
+        else
+          surface->GetCellData()->SetScalars(scalars);
+      }
+      auto normals = Ptr<vtkPolyDataNormals>::New();
+      normals->SetInputData(surface);
+      normals->SplittingOff();
+      normals->ConsistencyOff();
+      normals->AutoOrientNormalsOff();
+      normals->Update();
+      vtkPolyDataMapper* mapper = fabric_mappers[l];
+      mapper->SetInputData(normals->GetOutput());
+      if (options.field) {
+        std::array<double, 2> range =
+            field_range ? *field_range
+                        : std::array<double, 2>{values.size() ? values.minCoeff() : 0.0,
+                                                values.size() ? values.maxCoeff() : 1.0};
+        if (!(range[1] > range[0]))
+          range[1] = range[0] + std::max(1e-12, std::abs(range[0]) * 1e-6);
+        mapper->ScalarVisibilityOn();
+        mapper->SetScalarModeToDefault();
+        mapper->SetScalarRange(range[0], range[1]);
+        colours->SetRange(range[0], range[1]);
+      }
+    }
+  }
+
+  void Show(const Frame& frame) {
+    if (!frame.state) throw std::invalid_argument("a frame without a state");
+    const ShellState& state = *frame.state;
+    ShowFabric(frame);
+    for (size_t o = 0; o < obstacle_actors.size(); ++o) {
+      auto matrix = Ptr<vtkMatrix4x4>::New();
+      if (o < state.obstacles.size()) {
+        const ObstaclePlacement& p = state.obstacles[o];
+        for (int r = 0; r < 3; ++r) {
+          for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, p.rotation(r, c));
+          matrix->SetElement(r, 3, p.translation(r));
+        }
+      }
+      obstacle_actors[o]->SetUserMatrix(matrix);
+    }
+    supports->Place(support_nodes, state);
+    grippers->Place(gripper_nodes, state);
+    for (size_t p = 0; p < probe_labels.size(); ++p) {
+      Eigen::Vector3d at = ProbePosition(model, model.probes[p], state);
+      probe_labels[p]->SetAttachmentPoint(at.data());
+    }
+    char text[512];
+    if (frame.step == 0)
+      std::snprintf(text, sizeof text, "%s\nreference state", scene.name.c_str());
+    else
+      std::snprintf(text,
+                    sizeof text,
+                    "%s\nstage %s   step %d   lambda = %.4f",
+                    scene.name.c_str(),
+                    frame.stage_name.c_str(),
+                    frame.step,
+                    frame.lambda);
+    overlay->SetInput(text);
+    renderer->ResetCameraClippingRange();
+    window->Render();
+  }
+};
+
+FrameRenderer::FrameRenderer(const Scene& scene,
+                             const ShellModel& model,
+                             const RenderOptions& options,
+                             const Eigen::AlignedBox3d& bounds,
+                             std::optional<std::array<double, 2>> field_range)
+    : impl_(std::make_unique<Impl>(scene, model, options, bounds, field_range)) {}
+
+FrameRenderer::~FrameRenderer() = default;
+
+void FrameRenderer::Show(const Frame& frame) {
+  impl_->Show(frame);
+}
+
+std::vector<unsigned char> FrameRenderer::CaptureRgb() {
+  auto grab = Ptr<vtkWindowToImageFilter>::New();
+  grab->SetInput(impl_->window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  auto* data = static_cast<unsigned char*>(image->GetScalarPointer());
+  const size_t row = static_cast<size_t>(dims[0]) * 3;
+  std::vector<unsigned char> rgb(row * dims[1]);
+  for (int y = 0; y < dims[1]; ++y)  // VTK's first row is the bottom one
+    std::copy(data + row * (dims[1] - 1 - y), data + row * (dims[1] - y), rgb.data() + row * y);
+  return rgb;
+}
+
+void FrameRenderer::WritePng(const std::filesystem::path& file) {
+  auto grab = Ptr<vtkWindowToImageFilter>::New();
+  grab->SetInput(impl_->window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  auto writer = Ptr<vtkPNGWriter>::New();
+  writer->SetFileName(file.string().c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  std::error_code ec;
+  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(file, ec))
+    throw std::runtime_error("cannot write the image " + file.string());
+}
+
+int FrameRenderer::width() const {
+  return impl_->options.width;
+}
+int FrameRenderer::height() const {
+  return impl_->options.height;
+}
+vtkRenderer* FrameRenderer::renderer() {
+  return impl_->renderer;
+}
+
+Eigen::AlignedBox3d RunBounds(const Scene& scene, const std::vector<const ShellState*>& states) {
+  Eigen::AlignedBox3d box;
+  for (const ShellState* s : states)
+    for (int i = 0; i < s->positions.rows(); ++i)
+      box.extend(s->positions.row(i).transpose().eval());
+  // Finite obstacles the part rests on belong in the picture.
+  for (const auto& o : scene.obstacles) {
+    if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
+      box.extend(Eigen::Vector3d(b->min[0], b->min[1], b->min[2]));
+      box.extend(Eigen::Vector3d(b->max[0], b->max[1], b->max[2]));
+    } else if (const auto* s = std::get_if<SphereShape>(&o.shape)) {
+      const Eigen::Vector3d c(s->center[0], s->center[1], s->center[2]);
+      box.extend((c.array() - s->radius).matrix());
+      box.extend((c.array() + s->radius).matrix());
+    }
+  }
+  if (box.isEmpty()) box.extend(Eigen::Vector3d::Zero());
+  return box;
+}
+
+std::vector<Eigen::Vector3d> GripperPathPoints(const Scene& scene, const ShellModel& model) {
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& line : GripperPaths(scene, model))
+    points.insert(points.end(), line.begin(), line.end());
+  return points;
+}
+
+std::array<double, 2> FieldRange(FieldKind kind,
+                                 const ShellModel& model,
+                                 const std::vector<const ShellState*>& states,
+                                 const std::vector<double>& contact_pressure) {
+  std::array<double, 2> range{INFINITY, -INFINITY};
+  auto take = [&](const Eigen::VectorXd& v) {
+    if (!v.size()) return;
+    range[0] = std::min(range[0], v.minCoeff());
+    range[1] = std::max(range[1], v.maxCoeff());
+  };
+  if (kind == FieldKind::kContactPressure) {
+    take(Eigen::Map<const Eigen::VectorXd>(contact_pressure.data(),
+                                           static_cast<Eigen::Index>(contact_pressure.size())));
+  } else {
+    for (const ShellState* s : states) take(EvaluateField(kind, model, *s));
+  }
+  if (!(range[0] <= range[1])) range = {0.0, 1.0};
+  return range;
+}
+
+}  // namespace drape

@@ -1,0 +1,105 @@
+// The one picture of a state: the fabric surface (two-sided, an optional
+// colour field with its bar and units, optional mesh edges and thickness),
+// obstacles where the state put them, supports and grippers as glyphs, the
+// grippers' paths, probes with labels, a floor grid and a text overlay. The
+// offscreen commands and the workbench's viewport draw with this class, so a
+// CI image shows what a user sees.
+//
+// A FrameRenderer is made once per run: the camera is fitted to the whole
+// run (so it does not jump between frames) and a colour field keeps one
+// range; each Show() moves the actors to a new state.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/scene.h"
+#include "core/solve/element_fields.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/shell_state.h"
+
+class vtkRenderer;
+class vtkRenderWindow;
+
+namespace drape {
+
+// "iso", "front", "top", "side", or an explicit camera.
+struct CameraSpec {
+  std::string view = "iso";
+  std::optional<Eigen::Vector3d> position, focal_point, view_up;
+};
+
+struct RenderOptions {
+  int width = 1280, height = 720;
+  std::optional<FieldKind> field;  // none: the fabric's own two colours
+  bool edges = false;              // mesh lines on the surface
+  bool thickness = false;          // both faces, h apart, instead of the midsurface
+  bool floor = true;               // a grid under the part (unless a plane obstacle is there)
+  bool paths = true;               // gripper paths as polylines with an arrow
+  bool overlay = true;             // scene name, stage, step, λ
+  CameraSpec camera;
+};
+
+// What changes from frame to frame.
+struct Frame {
+  const ShellState* state = nullptr;
+  int step = 0;  // 0: the reference state
+  std::string stage_name;
+  double lambda = 0;
+  // Per node, for the contact-pressure field (empty: not available).
+  std::vector<double> contact_pressure;
+};
+
+class FrameRenderer {
+ public:
+  // `bounds`: a box every frame of the run fits in (RunBounds). `field_range`
+  // fixes the colour bar's range (default: each frame's own).
+  FrameRenderer(const Scene& scene,
+                const ShellModel& model,
+                const RenderOptions& options,
+                const Eigen::AlignedBox3d& bounds,
+                std::optional<std::array<double, 2>> field_range = std::nullopt);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  // Moves every actor to the frame's state and renders. Throws
+  // std::invalid_argument for a field the frame cannot show (contact
+  // pressure without pressures).
+  void Show(const Frame& frame);
+
+  // The last rendered picture, RGB, rows from the top.
+  std::vector<unsigned char> CaptureRgb();
+  // The last rendered picture as a PNG; throws std::runtime_error naming the file.
+  void WritePng(const std::filesystem::path& file);
+
+  int width() const;
+  int height() const;
+  vtkRenderer* renderer();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The box the part and the scene's finite obstacles occupy over `states`.
+Eigen::AlignedBox3d RunBounds(const Scene& scene, const std::vector<const ShellState*>& states);
+
+// Every point of every gripper path (for a camera that must see them).
+std::vector<Eigen::Vector3d> GripperPathPoints(const Scene& scene, const ShellModel& model);
+
+// The value range of a field over several states (for one colour bar across
+// an animation).
+std::array<double, 2> FieldRange(FieldKind kind,
+                                 const ShellModel& model,
+                                 const std::vector<const ShellState*>& states,
+                                 const std::vector<double>& contact_pressure = {});
+
+}  // namespace drape
