@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the main job on the paper's strip
-# fold (resources/scenes/strip-fold.json), headless, writing results/.
+# fold (resources/scenes/strip-fold.json), headless: solves it, then draws
+# its last step and an animation of the fold under a virtual display.
 set -euo pipefail
 cd "$(dirname "$0")"
 source scripts/setup.sh
 drape_setup
 drape=build/app/drape
-"$drape" run resources/scenes/strip-fold.json -o results/strip-fold
-echo "run.sh: the strip fold is solved; results in results/strip-fold/ (result.json, states.bin, steps.csv)"
+out=results/strip-fold
+"$drape" run resources/scenes/strip-fold.json -o "$out"
+xvfb-run -a "$drape" render "$out" -o "$out/fold.png" --field curvature
+xvfb-run -a "$drape" animate "$out" -o "$out/fold.mp4"
+echo "run.sh: the strip fold is solved; results in $out/ (result.json, states.bin, steps.csv, fold.png, fold.mp4)"

@@ -156,6 +156,18 @@ TEST_F(RenderCli, ExportWritesEveryStepAndACollection) {
   EXPECT_NE(r.exit_code, 0);
 }
 
+TEST_F(RenderCli, RunRendersEveryNthStepWhileSolving) {
+  const auto r = RunDrape("run '" + (test::ScenesDir() / "strip-convergence-20.json").string() +
+                          "' -o " + Out("framed") + " --quiet --render-every 10");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const int steps = States() - 1;
+  int pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "framed" / "frames"))
+    pngs += e.path().extension() == ".png";
+  EXPECT_EQ(pngs, steps / 10);
+  EXPECT_EQ(PngSize(dir_ / "framed" / "frames" / "step_0010.png"), std::make_pair(1280u, 720u));
+}
+
 TEST_F(RenderCli, WithoutADisplayRenderingSaysToUseXvfb) {
   for (const std::string& command : {"render " + Fold() + " -o " + Out("nodisplay.png"),
                                      "animate " + Fold() + " -o " + Out("nodisplay.mp4")}) {
