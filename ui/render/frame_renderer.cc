@@ -115,7 +115,7 @@ struct FrameRenderer::Impl {
   Eigen::AlignedBox3d bounds;
   std::optional<std::array<double, 2>> field_range;
 
-  Ptr<vtkRenderWindow> window = Ptr<vtkRenderWindow>::New();
+  Ptr<vtkRenderWindow> window;
   Ptr<vtkRenderer> renderer = Ptr<vtkRenderer>::New();
   std::vector<Ptr<vtkPolyDataMapper>> fabric_mappers;  // one, or two with thickness
   std::vector<Ptr<vtkActor>> fabric_actors;
@@ -131,15 +131,21 @@ struct FrameRenderer::Impl {
        const ShellModel& m,
        const RenderOptions& o,
        const Eigen::AlignedBox3d& b,
-       std::optional<std::array<double, 2>> range)
+       std::optional<std::array<double, 2>> range,
+       vtkRenderWindow* external)
       : scene(s), model(m), options(o), bounds(b), field_range(range) {
-    window->SetOffScreenRendering(1);
-    window->SetSize(options.width, options.height);
+    if (external) {
+      window = external;
+    } else {
+      window = Ptr<vtkRenderWindow>::New();
+      window->SetOffScreenRendering(1);
+      window->SetSize(options.width, options.height);
+      // No anti-aliasing: in Xvfb's software GL 4× multisampling made a
+      // 1280 × 720 frame of a 20 × 20 sheet 3× slower (80 against 25 ms)
+      // and FXAA added 45 ms.
+      window->SetMultiSamples(0);
+    }
     window->AddRenderer(renderer);
-    // No anti-aliasing: in Xvfb's software GL 4× multisampling made a
-    // 1280 × 720 frame of a 20 × 20 sheet 3× slower (80 against 25 ms) and
-    // FXAA added 45 ms.
-    window->SetMultiSamples(0);
     renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
     renderer->SetTwoSidedLighting(true);
     const double size = bounds.diagonal().norm();
@@ -405,7 +411,7 @@ struct FrameRenderer::Impl {
     }
   }
 
-  void Show(const Frame& frame) {
+  void Update(const Frame& frame) {
     if (!frame.state) throw std::invalid_argument("a frame without a state");
     const ShellState& state = *frame.state;
     ShowFabric(frame);
@@ -439,7 +445,6 @@ struct FrameRenderer::Impl {
                     frame.lambda);
     overlay->SetInput(text);
     renderer->ResetCameraClippingRange();
-    window->Render();
   }
 };
 
@@ -447,13 +452,19 @@ FrameRenderer::FrameRenderer(const Scene& scene,
                              const ShellModel& model,
                              const RenderOptions& options,
                              const Eigen::AlignedBox3d& bounds,
-                             std::optional<std::array<double, 2>> field_range)
-    : impl_(std::make_unique<Impl>(scene, model, options, bounds, field_range)) {}
+                             std::optional<std::array<double, 2>> field_range,
+                             vtkRenderWindow* window)
+    : impl_(std::make_unique<Impl>(scene, model, options, bounds, field_range, window)) {}
 
 FrameRenderer::~FrameRenderer() = default;
 
 void FrameRenderer::Show(const Frame& frame) {
-  impl_->Show(frame);
+  impl_->Update(frame);
+  impl_->window->Render();
+}
+
+void FrameRenderer::Update(const Frame& frame) {
+  impl_->Update(frame);
 }
 
 std::vector<unsigned char> FrameRenderer::CaptureRgb() {

@@ -60,12 +60,16 @@ struct Frame {
 class FrameRenderer {
  public:
   // `bounds`: a box every frame of the run fits in (RunBounds). `field_range`
-  // fixes the colour bar's range (default: each frame's own).
+  // fixes the colour bar's range (default: each frame's own). With `window`
+  // (the workbench's viewport) the renderer draws there and the window's
+  // owner decides when to render; without, into an offscreen window of
+  // options.width × options.height. `scene` and `model` must outlive this.
   FrameRenderer(const Scene& scene,
                 const ShellModel& model,
                 const RenderOptions& options,
                 const Eigen::AlignedBox3d& bounds,
-                std::optional<std::array<double, 2>> field_range = std::nullopt);
+                std::optional<std::array<double, 2>> field_range = std::nullopt,
+                vtkRenderWindow* window = nullptr);
   ~FrameRenderer();
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
@@ -74,6 +78,8 @@ class FrameRenderer {
   // std::invalid_argument for a field the frame cannot show (contact
   // pressure without pressures).
   void Show(const Frame& frame);
+  // The same without rendering (for a viewport that renders when it paints).
+  void Update(const Frame& frame);
 
   // The last rendered picture, RGB, rows from the top.
   std::vector<unsigned char> CaptureRgb();
