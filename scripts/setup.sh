@@ -16,6 +16,8 @@ DRAPE_PACKAGES=(
   # rendering (ui/render): VTK through X; ffmpeg encodes MP4/GIF (and its
   # ffprobe checks them in the tests)
   libvtk9-dev libx11-dev ffmpeg
+  # the workbench (ui/widgets): Qt 6 widgets and OpenGL widgets
+  qt6-base-dev libqt6opengl6-dev libgl-dev
   # headless display for render and GUI tests
   xvfb xauth
 )

@@ -1,0 +1,75 @@
+// `drape-studio [SCENE] [--run] [--screenshot FILE] [--quit]`: the
+// workbench. The flags are for scripts and CI: open a scene, run it, save
+// the window's 3-D view, quit.
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QImage>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <cstdio>
+
+#include "ui/widgets/main_window.h"
+#include "ui/widgets/vtk_viewport.h"
+
+namespace {
+
+// The screenshot and the quit, once the view shows what was asked for.
+void Finish(drape::MainWindow& window, const QString& screenshot, bool quit) {
+  // Let the last step reach the screen before grabbing it.
+  QTimer::singleShot(200, &window, [&window, screenshot, quit] {
+    int status = 0;
+    if (!screenshot.isEmpty()) {
+      const QImage image = window.viewport()->grabFramebuffer();
+      if (image.isNull() || !image.save(screenshot)) {
+        std::fprintf(
+            stderr, "drape-studio: cannot write the screenshot %s\n", qPrintable(screenshot));
+        status = 1;
+      }
+    }
+    if (quit) QApplication::exit(status);
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QSurfaceFormat::setDefaultFormat(drape::VtkViewport::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("Drape Studio");
+  QApplication::setOrganizationName("Drape Studio");
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Drape Studio: simulate, fold and drape fabric parts");
+  parser.addHelpOption();
+  parser.addPositionalArgument("scene", "Scene file to open");
+  const QCommandLineOption run("run", "Run the scene once it is open");
+  const QCommandLineOption screenshot("screenshot", "Save the 3-D view to FILE (PNG)", "FILE");
+  const QCommandLineOption quit("quit",
+                                "Quit when the run (if any) is done and the screenshot saved");
+  parser.addOptions({run, screenshot, quit});
+  parser.process(app);
+
+  drape::MainWindow window;
+  window.show();
+  const QStringList scenes = parser.positionalArguments();
+  if (!scenes.isEmpty() && !window.openScene(scenes.front())) {
+    std::fprintf(stderr, "drape-studio: cannot open %s\n", qPrintable(scenes.front()));
+    if (parser.isSet(quit)) return 1;
+  }
+  const QString shot = parser.value(screenshot);
+  const bool quitting = parser.isSet(quit);
+  if (parser.isSet(run) && !scenes.isEmpty()) {
+    QObject::connect(&window,
+                     &drape::MainWindow::runFinished,
+                     &window,
+                     [&window, shot, quitting](const drape::SolveSummary& summary) {
+                       std::fprintf(stderr, "%s\n", summary.BriefReport().c_str());
+                       Finish(window, shot, quitting);
+                     });
+    QTimer::singleShot(0, &window, [&window] { window.run(); });
+  } else if (!shot.isEmpty() || quitting) {
+    Finish(window, shot, quitting);
+  }
+  return app.exec();
+}

@@ -1,0 +1,74 @@
+// The workbench's main window: a scene, its 3-D view, a run on a worker
+// thread streaming each converged step to the view, and a timeline over the
+// steps. (Editors, plots and export come on top of this.)
+#pragma once
+
+#include <QMainWindow>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/model/scene.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/solve_summary.h"
+#include "core/solve/step_state.h"
+#include "ui/widgets/meta_types.h"
+
+class QAction;
+class QLabel;
+class QSlider;
+class QThread;
+
+namespace drape {
+
+class FrameRenderer;
+class SolverWorker;
+class VtkViewport;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Loads a scene file; on error shows the message and keeps what was open.
+  bool openScene(const QString& file);
+  VtkViewport* viewport() const { return viewport_; }
+  int stepCount() const { return static_cast<int>(steps_.size()); }
+  bool isRunning() const { return running_; }
+
+ public slots:
+  void run();
+  void pauseOrResume();
+  void stepOnce();
+  void stop();
+  void showStep(int index);  // 0: the reference state
+
+ signals:
+  void runFinished(const drape::SolveSummary& summary);
+
+ private slots:
+  void onStep(std::shared_ptr<const drape::StepState> step);
+  void onFinished(const drape::SolveSummary& summary);
+  void onFailed(const QString& message);
+
+ private:
+  void buildActions();
+  void rebuildRenderer();
+  void updateControls();
+
+  Scene scene_;
+  std::unique_ptr<ShellModel> model_;
+  std::unique_ptr<FrameRenderer> renderer_;
+  std::vector<std::shared_ptr<const StepState>> steps_;
+  VtkViewport* viewport_ = nullptr;
+  QSlider* timeline_ = nullptr;
+  QLabel* step_label_ = nullptr;
+  QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
+  QThread* thread_ = nullptr;
+  SolverWorker* worker_ = nullptr;
+  bool running_ = false, paused_ = false, follow_ = true;
+};
+
+}  // namespace drape

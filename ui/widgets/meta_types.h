@@ -1,0 +1,14 @@
+// Core types that cross threads in queued signals.
+#pragma once
+
+#include <QMetaType>
+
+#include <memory>
+
+#include "core/model/scene.h"
+#include "core/solve/solve_summary.h"
+#include "core/solve/step_state.h"
+
+Q_DECLARE_METATYPE(drape::Scene)
+Q_DECLARE_METATYPE(drape::SolveSummary)
+Q_DECLARE_METATYPE(std::shared_ptr<const drape::StepState>)

@@ -1,0 +1,48 @@
+// The solver on a worker thread: core's ShellSolver, driven through its
+// observer and cancellation token, with every converged step sent to the
+// GUI thread as a queued signal (none lost: the timeline keeps them all).
+#pragma once
+
+#include <QObject>
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+
+#include "core/model/scene.h"
+#include "core/solve/solve_summary.h"
+#include "core/solve/step_state.h"
+#include "ui/widgets/meta_types.h"
+
+namespace drape {
+
+class SolverWorker : public QObject {
+  Q_OBJECT
+ public:
+  // Thread-safe controls, called from the GUI thread.
+  void pause();
+  void resume();
+  void step();  // while paused: let one more step through
+  void stop();  // within one Newton iteration; steps so far are kept
+
+ public slots:
+  // Runs the whole scene; emits stepConverged per step, then finished.
+  void run(const drape::Scene& scene);
+
+ signals:
+  void stepConverged(std::shared_ptr<const drape::StepState> step);
+  void finished(const drape::SolveSummary& summary);
+  void failed(const QString& message);
+
+ private:
+  StepDecision Observe(const StepState& step);
+
+  CancellationToken cancel_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool paused_ = false;
+  int steps_allowed_ = 0;  // while paused
+};
+
+}  // namespace drape

@@ -1,0 +1,58 @@
+// A QOpenGLWidget that hosts a vtkGenericOpenGLRenderWindow: the bridge
+// between Qt 6 and Debian's VTK (whose own Qt module is built for Qt 5),
+// doing what VTK's QVTKOpenGLNativeWidget and QVTKRenderWindowAdapter do:
+// VTK renders with Qt's context (context callbacks, OpenGLInitContext),
+// into its own framebuffer, which paintGL blits into the widget's
+// defaultFramebufferObject with the GL state saved and restored around it.
+// Mouse and wheel events drive a trackball-camera interactor.
+#pragma once
+
+#include <vtkSmartPointer.h>
+#include <QOpenGLWidget>
+#include <QSurfaceFormat>
+
+#include <vector>
+
+class vtkGenericOpenGLRenderWindow;
+class vtkGenericRenderWindowInteractor;
+class vtkObject;
+
+namespace drape {
+
+class VtkViewport : public QOpenGLWidget {
+  Q_OBJECT
+ public:
+  explicit VtkViewport(QWidget* parent = nullptr);
+  ~VtkViewport() override;
+
+  // What VTK's OpenGL2 backend needs of the context (3.2 core, depth and
+  // stencil): set it with QSurfaceFormat::setDefaultFormat before the
+  // QApplication is made.
+  static QSurfaceFormat defaultFormat();
+
+  // The window to add renderers to (FrameRenderer's `window`).
+  vtkGenericOpenGLRenderWindow* renderWindow() const;
+  // Asks for a VTK render at the next paint (after the scene changed).
+  void requestRender();
+
+ protected:
+  void initializeGL() override;
+  void resizeGL(int width, int height) override;
+  void paintGL() override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+
+ private:
+  void OnWindowEvent(vtkObject* caller, unsigned long event, void* data);
+  void ForwardMouse(QMouseEvent* event, unsigned long vtk_event);
+
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
+  vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
+  std::vector<unsigned long> observers_;
+  bool in_paint_ = false;
+  int framebuffer_retries_ = 0;  // new framebuffers asked of Qt (see paintGL)
+};
+
+}  // namespace drape
