@@ -15,15 +15,13 @@
 #include <optional>
 #include <string>
 
-#include <Eigen/Geometry>
 
 #include "app/commands.h"
 #include "app/run_input.h"
-#include "core/mechanics/director.h"
 #include "core/model/scene_error.h"
+#include "ui/render/animation.h"
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
-#include "ui/render/video_encoder.h"
 
 namespace drape::app {
 namespace {
@@ -160,96 +158,43 @@ struct AnimateArgs {
   ViewArgs view;
 };
 
-// The state at "step time" s ∈ [0, n − 1] between the recorded states:
-// positions and obstacle translations interpolated linearly, directors
-// normalised, obstacle rotations by quaternion slerp.
-ShellState Interpolated(const RunInput& run, double s) {
-  const size_t last = run.states.size() - 1;
-  const size_t a = std::min(static_cast<size_t>(std::floor(s)), last);
-  const size_t b = std::min(a + 1, last);
-  const double w = std::clamp(s - static_cast<double>(a), 0.0, 1.0);
-  const ShellState& sa = run.states[a];
-  const ShellState& sb = run.states[b];
-  ShellState out;
-  out.positions = (1 - w) * sa.positions + w * sb.positions;
-  out.rotations.resize(sa.rotations.size());
-  for (size_t n = 0; n < sa.rotations.size(); ++n) {
-    Eigen::Vector3d t = (1 - w) * sa.rotations[n].col(2) + w * sb.rotations[n].col(2);
-    if (t.norm() < 1e-12) t = sb.rotations[n].col(2);
-    out.rotations[n] = RotationFromDirector(t.normalized());
-  }
-  out.obstacles = sa.obstacles;
-  for (size_t o = 0; o < out.obstacles.size() && o < sb.obstacles.size(); ++o) {
-    const Eigen::Quaterniond qa(sa.obstacles[o].rotation), qb(sb.obstacles[o].rotation);
-    out.obstacles[o].rotation = qa.slerp(w, qb).toRotationMatrix();
-    out.obstacles[o].translation =
-        (1 - w) * sa.obstacles[o].translation + w * sb.obstacles[o].translation;
-  }
-  return out;
-}
-
 int RunAnimate(const AnimateArgs& args) {
   return Guarded("animate", [&]() -> int {
-    if (!(args.fps > 0 && args.fps <= 120))
-      throw std::invalid_argument("--fps: must lie in (0, 120], got " + std::to_string(args.fps));
-    if (args.duration < 0) throw std::invalid_argument("--duration: must be positive");
-    const RenderOptions options = args.view.Options();
+    AnimationOptions options;
+    options.view = args.view.Options();
+    options.fps = args.fps;
+    options.duration = args.duration;
     const RunInput run = ReadRunInput(args.input);
     if (!run.is_result)
       throw std::invalid_argument(args.input + ": a scene has one state; animate a result folder");
-    std::optional<std::array<double, 2>> range;
-    if (options.field)
-      range = FieldRange(*options.field, run.model, Pointers(run), run.final_contact_pressure);
-    if (options.field && *options.field == FieldKind::kContactPressure)
-      throw std::invalid_argument(
-          "--field pressure: contact pressure is stored for the last step only; render that step");
-    FrameRenderer renderer(
-        run.scene, run.model, options, RunBounds(run.scene, Pointers(run)), range);
-    const size_t states = run.states.size();
-    const int frames = args.duration > 0
-                           ? std::max(2, static_cast<int>(std::lround(args.duration * args.fps)))
-                           : static_cast<int>(states);
-    auto sink = OpenFrameSink(args.output, options.width, options.height, args.fps);
-
+    const AnimationInput input{&run.scene, &run.model, Pointers(run), run.stage_names, run.lambdas};
     g_interrupted = false;
     std::signal(SIGINT, OnInterrupt);
     std::signal(SIGTERM, OnInterrupt);
     const bool terminal = isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
-    int done = 0;
-    for (; done < frames && !g_interrupted; ++done) {
-      if (args.duration > 0) {
-        const double s = static_cast<double>(done) / (frames - 1) * static_cast<double>(states - 1);
-        const ShellState state = Interpolated(run, s);
-        const size_t near = std::min(static_cast<size_t>(std::lround(s)), states - 1);
-        Frame f = FrameOf(run, near);
-        f.state = &state;
-        f.contact_pressure.clear();
-        renderer.Show(f);
-      } else {
-        Frame f = FrameOf(run, static_cast<size_t>(done));
-        f.contact_pressure.clear();
-        renderer.Show(f);
-      }
-      sink->Add(renderer.CaptureRgb());
-      if (terminal) {
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const double eta = elapsed / (done + 1) * (frames - done - 1);
-        std::fprintf(
-            stderr, "\r\033[K  frame %d/%d, %.1f s, ETA %.1f s", done + 1, frames, elapsed, eta);
-      }
-    }
+    int last_done = 0;
+    const int frames = WriteAnimation(
+        input,
+        options,
+        args.output,
+        [&](int done, int all) {
+          last_done = done;
+          if (!terminal) return;
+          const double elapsed =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          const double eta = elapsed / done * (all - done);
+          std::fprintf(
+              stderr, "\r\033[K  frame %d/%d, %.1f s, ETA %.1f s", done, all, elapsed, eta);
+        },
+        &g_interrupted);
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (terminal) std::fprintf(stderr, "\r\033[K");
-    if (g_interrupted) {
-      sink->Abort();
-      std::cerr << "drape animate: cancelled after " << done << " of " << frames
-                << " frames; no movie written\n";
+    if (frames < 0) {
+      std::cerr << "drape animate: cancelled after " << last_done << " frames; no movie written\n";
       return 130;
     }
-    sink->Finish();
     std::cerr << "  " << frames << " frames at " << args.fps << " fps: " << args.output << "\n";
     return 0;
   });
