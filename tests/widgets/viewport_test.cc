@@ -141,6 +141,75 @@ TEST_F(Widgets, WorkbenchShowsEveryStepOfARunInOrder) {
   EXPECT_NEAR(fabric, expected, 0.05 * expected);
 }
 
+// "ffprobe" of a movie: "width,height,frames".
+std::string Probe(const std::string& movie) {
+  FILE* pipe = popen(("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                      "stream=width,height,nb_read_frames -of csv=p=0 '" +
+                      movie + "' 2>&1")
+                         .c_str(),
+                     "r");
+  std::string out;
+  char buf[256];
+  while (fgets(buf, sizeof buf, pipe)) out += buf;
+  pclose(pipe);
+  while (!out.empty() && (out.back() == '\n' || out.back() == ',')) out.pop_back();
+  return out;
+}
+
+// Run controls answer while the solver works: paused, no step arrives;
+// Step lets exactly one through; Stop ends the run keeping every step, in
+// order. Then the timeline scrubs and the run exports a PNG and an MP4.
+TEST_F(Widgets, RunPausesStepsStopsScrubsAndExports) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
+  QSignalSpy finished(&window, &MainWindow::runFinished);
+  window.run();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() >= 3; }, 30000));
+  window.pauseOrResume();
+  ASSERT_TRUE(window.isPaused());
+  QTest::qWait(300);  // a step under way when pausing still arrives
+  const int paused_at = window.stepCount();
+  QTest::qWait(500);
+  EXPECT_EQ(window.stepCount(), paused_at) << "steps arrived while paused";
+  window.stepOnce();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() == paused_at + 1; }, 10000));
+  QTest::qWait(300);
+  EXPECT_EQ(window.stepCount(), paused_at + 1) << "Step let more than one step through";
+  window.pauseOrResume();  // resume
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() >= paused_at + 4; }, 30000));
+  window.stop();
+  ASSERT_TRUE(finished.wait(30000));
+  const auto summary = finished.takeFirst().at(0).value<SolveSummary>();
+  EXPECT_EQ(summary.termination, Termination::kCancelled) << summary.message;
+  ASSERT_EQ(window.stepCount(), summary.steps);
+  for (int i = 1; i <= window.stepCount(); ++i) EXPECT_EQ(window.step(i).step, i);
+  EXPECT_LT(summary.steps, 58);  // stopped before the end
+
+  window.showStep(2);
+  EXPECT_EQ(window.currentStep(), 2);
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / ("drape-gui-" + std::to_string(getpid()))).string();
+  std::filesystem::create_directories(dir);
+  QString error;
+  ASSERT_TRUE(window.exportImage(QString::fromStdString(dir + "/step2.png"), &error))
+      << error.toStdString();
+  const QImage png(QString::fromStdString(dir + "/step2.png"));
+  EXPECT_EQ(png.size(), window.viewport()->size());
+  EXPECT_GT(CountFabric(png), 1000);
+  ASSERT_TRUE(window.setField("curvature"));
+  ASSERT_TRUE(window.exportAnimation(QString::fromStdString(dir + "/run.mp4"), 25, &error))
+      << error.toStdString();
+  const QSize size = window.viewport()->size();
+  EXPECT_EQ(Probe(dir + "/run.mp4"),
+            std::to_string(size.width() + size.width() % 2) + "," +
+                std::to_string(size.height() + size.height() % 2) + "," +
+                std::to_string(window.stepCount() + 1));
+  std::filesystem::remove_all(dir);
+}
+
 // The automation CI uses: open, run, screenshot, quit.
 TEST_F(Widgets, StudioRunsAScriptAndWritesANonBlackScreenshot) {
   const std::string shot = (std::filesystem::temp_directory_path() /

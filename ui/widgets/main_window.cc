@@ -2,19 +2,25 @@
 
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <QAction>
+#include <QComboBox>
+#include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QSlider>
 #include <QStatusBar>
 #include <QThread>
+#include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include "core/io/scene_reader.h"
 #include "core/model/outline_geometry.h"
+#include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/solver_worker.h"
 #include "ui/widgets/vtk_viewport.h"
@@ -47,8 +53,26 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   timeline_->setRange(0, 0);
   step_label_ = new QLabel("no scene", central);
   step_label_->setMinimumWidth(260);
+  field_ = new QComboBox(central);
+  field_->addItem("fabric colours", "");
+  for (const auto& f : Fields()) field_->addItem(f.title, f.name);
+  auto* play = new QAction("Play", this);
+  connect(play, &QAction::triggered, this, &MainWindow::play);
+  auto* play_button = new QToolButton(central);
+  play_button->setDefaultAction(play);
+  timeline->addWidget(play_button);
   timeline->addWidget(timeline_, 1);
   timeline->addWidget(step_label_);
+  timeline->addWidget(field_);
+  player_ = new QTimer(this);
+  player_->setInterval(40);
+  connect(player_, &QTimer::timeout, this, [this] {
+    if (currentStep() >= stepCount()) return player_->stop();
+    timeline_->setValue(currentStep() + 1);
+  });
+  connect(field_, &QComboBox::currentIndexChanged, this, [this](int) {
+    setField(field_->currentData().toString());
+  });
   layout->addLayout(timeline);
   setCentralWidget(central);
   connect(timeline_, &QSlider::valueChanged, this, [this](int i) {
@@ -86,6 +110,19 @@ void MainWindow::buildActions() {
   step_ = bar->addAction("Step", this, &MainWindow::stepOnce);
   stop_ = bar->addAction("Stop", this, &MainWindow::stop);
   stop_->setShortcut(Qt::Key_Escape);
+  bar->addSeparator();
+  bar->addAction("Export image…", this, [this] {
+    const QString file = QFileDialog::getSaveFileName(this, "Export image", {}, "PNG (*.png)");
+    QString error;
+    if (!file.isEmpty() && !exportImage(file, &error)) ShowError(this, "Export failed", error);
+  });
+  bar->addAction("Export animation…", this, [this] {
+    const QString file =
+        QFileDialog::getSaveFileName(this, "Export animation", {}, "Movies (*.mp4 *.gif *.ogv)");
+    QString error;
+    if (!file.isEmpty() && !exportAnimation(file, 25, &error) && !error.isEmpty())
+      ShowError(this, "Export failed", error);
+  });
 }
 
 void MainWindow::updateControls() {
@@ -130,16 +167,135 @@ void MainWindow::rebuildRenderer() {
   // The camera sees the part and where its grippers will take it.
   Eigen::AlignedBox3d bounds = RunBounds(scene_, {&model_->reference});
   for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
-  RenderOptions options;
   viewport_->makeCurrent();
+  renderer_.reset();  // its actors leave the window before the new ones come
   renderer_ = std::make_unique<FrameRenderer>(
-      scene_, *model_, options, bounds, std::nullopt, viewport_->renderWindow());
+      scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
   viewport_->doneCurrent();
+}
+
+int MainWindow::currentStep() const {
+  return timeline_->value();
+}
+
+bool MainWindow::setField(const QString& name) {
+  std::optional<FieldKind> kind;
+  if (!name.isEmpty()) {
+    const auto f = FindField(name.toStdString());
+    if (!f) return false;
+    kind = f->kind;
+  }
+  view_.field = kind;
+  const int index = field_->findData(name);
+  if (index >= 0 && index != field_->currentIndex()) {
+    const QSignalBlocker block(field_);
+    field_->setCurrentIndex(index);
+  }
+  if (!model_) return true;
+  rebuildRenderer();
+  try {
+    showStep(currentStep());
+  } catch (const std::exception& e) {  // contact pressure off the last step
+    statusBar()->showMessage(QString::fromStdString(e.what()));
+    view_.field.reset();
+    rebuildRenderer();
+    showStep(currentStep());
+    return false;
+  }
+  return true;
+}
+
+void MainWindow::play() {
+  if (stepCount() == 0) return;
+  if (currentStep() >= stepCount()) timeline_->setValue(0);
+  player_->start();
+}
+
+bool MainWindow::exportImage(const QString& file, QString* error) {
+  if (!model_) return false;
+  try {
+    Eigen::AlignedBox3d bounds = RunBounds(scene_, {&model_->reference});
+    for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
+    RenderOptions options = view_;
+    options.width = viewport_->width();
+    options.height = viewport_->height();
+    FrameRenderer offscreen(scene_, *model_, options, bounds);
+    ShellState reference = model_->reference;
+    reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
+    Frame frame;
+    frame.state = &reference;
+    const int i = currentStep();
+    if (i > 0) {
+      const StepState& s = *steps_[i - 1];
+      frame.state = &s.state;
+      frame.step = s.step;
+      frame.stage_name = s.stage_name;
+      frame.lambda = s.lambda;
+    }
+    offscreen.Show(frame);
+    offscreen.WritePng(file.toStdString());
+    statusBar()->showMessage("wrote " + file);
+    return true;
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return false;
+  }
+}
+
+bool MainWindow::exportAnimation(const QString& file, double fps, QString* error) {
+  if (!model_ || steps_.empty() || running_) {
+    if (error) *error = "nothing to animate: run the scene first";
+    return false;
+  }
+  ShellState reference = model_->reference;
+  reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
+  AnimationInput input{&scene_, model_.get(), {&reference}, {""}, {0.0}};
+  for (const auto& s : steps_) {
+    input.states.push_back(&s->state);
+    input.stage_names.push_back(s->stage_name);
+    input.lambdas.push_back(s->lambda);
+  }
+  AnimationOptions options;
+  options.view = view_;
+  options.view.width = viewport_->width();
+  options.view.height = viewport_->height();
+  options.fps = fps;
+  QProgressDialog dialog(
+      "Writing " + file, "Cancel", 0, static_cast<int>(input.states.size()), this);
+  dialog.setWindowModality(Qt::WindowModal);
+  dialog.setMinimumDuration(500);
+  std::atomic<bool> cancel{false};
+  try {
+    const int frames = WriteAnimation(
+        input,
+        options,
+        file.toStdString(),
+        [&](int done, int all) {
+          dialog.setMaximum(all);
+          dialog.setValue(done);
+          QCoreApplication::processEvents();
+          if (dialog.wasCanceled()) cancel = true;
+        },
+        &cancel);
+    if (frames < 0) {
+      statusBar()->showMessage("export cancelled; no file written");
+      return false;
+    }
+    statusBar()->showMessage(QString("wrote %1 frames to %2").arg(frames).arg(file));
+    return true;
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return false;
+  }
 }
 
 void MainWindow::showStep(int index) {
   if (!renderer_) return;
   index = std::clamp(index, 0, stepCount());
+  if (timeline_->value() != index) {
+    const QSignalBlocker block(timeline_);
+    timeline_->setValue(index);
+  }
   Frame frame;
   ShellState reference = model_->reference;
   reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
@@ -152,6 +308,7 @@ void MainWindow::showStep(int index) {
     frame.step = s.step;
     frame.stage_name = s.stage_name;
     frame.lambda = s.lambda;
+    if (s.contact) frame.contact_pressure = s.contact->pressure;
     step_label_->setText(QString("step %1 of %2 — stage %3, λ = %4")
                              .arg(s.step)
                              .arg(stepCount())

@@ -13,16 +13,18 @@
 #include "core/solve/shell_model.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
+#include "ui/render/frame_renderer.h"
 #include "ui/widgets/meta_types.h"
 
 class QAction;
+class QComboBox;
 class QLabel;
 class QSlider;
 class QThread;
+class QTimer;
 
 namespace drape {
 
-class FrameRenderer;
 class SolverWorker;
 class VtkViewport;
 
@@ -36,7 +38,20 @@ class MainWindow : public QMainWindow {
   bool openScene(const QString& file);
   VtkViewport* viewport() const { return viewport_; }
   int stepCount() const { return static_cast<int>(steps_.size()); }
+  // Step `i` (1-based, as the timeline counts).
+  const StepState& step(int i) const { return *steps_.at(i - 1); }
+  int currentStep() const;
   bool isRunning() const { return running_; }
+  bool isPaused() const { return paused_; }
+
+  // The colour field ("" for none, else a name of Fields()).
+  bool setField(const QString& name);
+  // The shown step as a PNG of the view's size, drawn by the offscreen
+  // renderer (the same builder); false with a message on failure.
+  bool exportImage(const QString& file, QString* error = nullptr);
+  // The run as a movie or frame folder (the same code as `drape animate`),
+  // with a progress dialog that can cancel; false when cancelled or failed.
+  bool exportAnimation(const QString& file, double fps = 25, QString* error = nullptr);
 
  public slots:
   void run();
@@ -44,6 +59,7 @@ class MainWindow : public QMainWindow {
   void stepOnce();
   void stop();
   void showStep(int index);  // 0: the reference state
+  void play();               // through the timeline from the shown step
 
  signals:
   void runFinished(const drape::SolveSummary& summary);
@@ -64,6 +80,9 @@ class MainWindow : public QMainWindow {
   std::vector<std::shared_ptr<const StepState>> steps_;
   VtkViewport* viewport_ = nullptr;
   QSlider* timeline_ = nullptr;
+  QComboBox* field_ = nullptr;
+  QTimer* player_ = nullptr;
+  RenderOptions view_;
   QLabel* step_label_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
   QThread* thread_ = nullptr;
