@@ -1,4 +1,5 @@
-// `drape-studio [SCENE] [--run] [--screenshot FILE] [--quit]`: the
+// `drape-studio [SCENE] [--run] [--screenshot FILE] [--window-screenshot
+// FILE] [--quit]`: the
 // workbench. The flags are for scripts and CI: open a scene, run it, save
 // the window's 3-D view, quit.
 #include <QApplication>
@@ -14,10 +15,13 @@
 
 namespace {
 
-// The screenshot and the quit, once the view shows what was asked for.
-void Finish(drape::MainWindow& window, const QString& screenshot, bool quit) {
+// The screenshots and the quit, once the view shows what was asked for.
+void Finish(drape::MainWindow& window,
+            const QString& screenshot,
+            const QString& window_shot,
+            bool quit) {
   // Let the last step reach the screen before grabbing it.
-  QTimer::singleShot(200, &window, [&window, screenshot, quit] {
+  QTimer::singleShot(200, &window, [&window, screenshot, window_shot, quit] {
     int status = 0;
     if (!screenshot.isEmpty()) {
       const QImage image = window.viewport()->grabFramebuffer();
@@ -26,6 +30,11 @@ void Finish(drape::MainWindow& window, const QString& screenshot, bool quit) {
             stderr, "drape-studio: cannot write the screenshot %s\n", qPrintable(screenshot));
         status = 1;
       }
+    }
+    if (!window_shot.isEmpty() && !window.grab().save(window_shot)) {
+      std::fprintf(
+          stderr, "drape-studio: cannot write the screenshot %s\n", qPrintable(window_shot));
+      status = 1;
     }
     if (quit) QApplication::exit(status);
   });
@@ -45,9 +54,11 @@ int main(int argc, char** argv) {
   parser.addPositionalArgument("scene", "Scene file to open");
   const QCommandLineOption run("run", "Run the scene once it is open");
   const QCommandLineOption screenshot("screenshot", "Save the 3-D view to FILE (PNG)", "FILE");
+  const QCommandLineOption window_shot(
+      "window-screenshot", "Save the whole window to FILE", "FILE");
   const QCommandLineOption quit("quit",
                                 "Quit when the run (if any) is done and the screenshot saved");
-  parser.addOptions({run, screenshot, quit});
+  parser.addOptions({run, screenshot, window_shot, quit});
   parser.process(app);
 
   drape::MainWindow window;
@@ -58,18 +69,19 @@ int main(int argc, char** argv) {
     if (parser.isSet(quit)) return 1;
   }
   const QString shot = parser.value(screenshot);
+  const QString whole = parser.value(window_shot);
   const bool quitting = parser.isSet(quit);
   if (parser.isSet(run) && !scenes.isEmpty()) {
     QObject::connect(&window,
                      &drape::MainWindow::runFinished,
                      &window,
-                     [&window, shot, quitting](const drape::SolveSummary& summary) {
+                     [&window, shot, whole, quitting](const drape::SolveSummary& summary) {
                        std::fprintf(stderr, "%s\n", summary.BriefReport().c_str());
-                       Finish(window, shot, quitting);
+                       Finish(window, shot, whole, quitting);
                      });
     QTimer::singleShot(0, &window, [&window] { window.run(); });
-  } else if (!shot.isEmpty() || quitting) {
-    Finish(window, shot, quitting);
+  } else if (!shot.isEmpty() || !whole.isEmpty() || quitting) {
+    Finish(window, shot, whole, quitting);
   }
   return app.exec();
 }

@@ -12,8 +12,12 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <QApplication>
 #include <QImage>
+#include <QLabel>
+#include <QLineEdit>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
+#include <QUndoStack>
 
 #include "core/io/scene_reader.h"
 #include "core/solve/shell_solver.h"
@@ -22,6 +26,8 @@
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/property_panel.h"
+#include "ui/widgets/scene_document.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -208,6 +214,63 @@ TEST_F(Widgets, RunPausesStepsStopsScrubsAndExports) {
                 std::to_string(size.height() + size.height() % 2) + "," +
                 std::to_string(window.stepCount() + 1));
   std::filesystem::remove_all(dir);
+}
+
+// Edits through the property panel: each accepted value is one undoable
+// edit; a bad one shows why and keeps the last valid value; the scene saved
+// and read back is the edited scene.
+TEST_F(Widgets, EditsUndoRedoAndSurviveSaveAndReopen) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
+  SceneDocument* doc = window.document();
+  PropertyPanel* panel = window.properties();
+  const Scene original = doc->scene();
+
+  panel->elementsX()->setValue(40);
+  emit panel->elementsX()->editingFinished();
+  ASSERT_TRUE(doc->scene().fabric.mesh.elements);
+  EXPECT_EQ((*doc->scene().fabric.mesh.elements)[0], 40);
+  EXPECT_EQ(panel->meshInfo()->text().toStdString(), "82 nodes, 40 elements, 410 DOFs");
+
+  QLineEdit* h = panel->thickness()->edit();
+  h->setText("0.6 mm");
+  emit h->editingFinished();
+  EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.6e-3);
+
+  // Bad input: a message, the last valid value back, the scene unchanged.
+  h->setText("0.6 kg");
+  emit h->editingFinished();
+  EXPECT_NE(panel->thickness()->message().toStdString().find("length"), std::string::npos)
+      << panel->thickness()->message().toStdString();
+  EXPECT_EQ(h->text().toStdString(), "0.6 mm");
+  h->setText("-1 mm");
+  emit h->editingFinished();
+  EXPECT_EQ(panel->thickness()->message().toStdString(), "must be > 0");
+  EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.6e-3);
+
+  QUndoStack* undo = doc->undoStack();
+  EXPECT_EQ(undo->count(), 2);
+  undo->undo();
+  EXPECT_EQ(doc->scene().material.thickness, original.material.thickness);
+  undo->undo();
+  EXPECT_EQ(doc->scene(), original);
+  undo->redo();
+  undo->redo();
+  EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.6e-3);
+  EXPECT_EQ((*doc->scene().fabric.mesh.elements)[0], 40);
+
+  // Saved (the strip fold names no files) and read back: equal.
+  const std::string file =
+      (std::filesystem::temp_directory_path() / ("edited-" + std::to_string(getpid()) + ".json"))
+          .string();
+  ASSERT_TRUE(window.saveScene(QString::fromStdString(file)));
+  const Scene reread = ReadScene(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(reread, doc->scene());
+  EXPECT_FALSE(doc->isModified());
 }
 
 // The automation CI uses: open, run, screenshot, quit.

@@ -4,10 +4,12 @@
 #include <QAction>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QSlider>
@@ -22,6 +24,8 @@
 #include "core/model/outline_geometry.h"
 #include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/property_panel.h"
+#include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
 #include "ui/widgets/vtk_viewport.h"
 
@@ -75,6 +79,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   layout->addLayout(timeline);
   setCentralWidget(central);
+  document_ = new SceneDocument(this);
+  properties_ = new PropertyPanel(document_, this);
+  auto* dock = new QDockWidget("Properties", this);
+  dock->setWidget(properties_);
+  addDockWidget(Qt::LeftDockWidgetArea, dock);
+  connect(document_, &SceneDocument::changed, this, &MainWindow::onDocumentChanged);
   connect(timeline_, &QSlider::valueChanged, this, [this](int i) {
     follow_ = i == stepCount();
     showStep(i);
@@ -98,12 +108,33 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::buildActions() {
+  QMenu* edit = menuBar()->addMenu("&Edit");
+  undo_ = document_->undoStack()->createUndoAction(this, "&Undo");
+  undo_->setShortcut(QKeySequence::Undo);
+  redo_ = document_->undoStack()->createRedoAction(this, "&Redo");
+  redo_->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo_);
+  edit->addAction(redo_);
   QToolBar* bar = addToolBar("Run");
   open_ = bar->addAction("Open…", this, [this] {
     const QString file = QFileDialog::getOpenFileName(this, "Open scene", {}, "Scenes (*.json)");
     if (!file.isEmpty()) openScene(file);
   });
   open_->setShortcut(QKeySequence::Open);
+  QAction* save = bar->addAction("Save", this, [this] {
+    if (document_->file().isEmpty()) {
+      const QString file = QFileDialog::getSaveFileName(this, "Save scene", {}, "Scenes (*.json)");
+      if (!file.isEmpty()) saveScene(file);
+    } else {
+      saveScene();
+    }
+  });
+  save->setShortcut(QKeySequence::Save);
+  QAction* save_as = bar->addAction("Save as…", this, [this] {
+    const QString file = QFileDialog::getSaveFileName(this, "Save scene as", {}, "Scenes (*.json)");
+    if (!file.isEmpty()) saveScene(file);
+  });
+  save_as->setShortcut(QKeySequence::SaveAs);
   run_ = bar->addAction("Run", this, &MainWindow::run);
   run_->setShortcut(Qt::Key_F5);
   pause_ = bar->addAction("Pause", this, &MainWindow::pauseOrResume);
@@ -129,6 +160,10 @@ void MainWindow::updateControls() {
   const bool loaded = model_ != nullptr;
   open_->setEnabled(!running_);
   run_->setEnabled(loaded && !running_);
+  // A run works on the scene it started with: no edits meanwhile.
+  properties_->setEnabled(!running_);
+  undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
+  redo_->setEnabled(!running_ && document_->undoStack()->canRedo());
   pause_->setEnabled(running_);
   pause_->setText(paused_ ? "Resume" : "Pause");
   step_->setEnabled(running_ && paused_);
@@ -138,20 +173,53 @@ void MainWindow::updateControls() {
 bool MainWindow::openScene(const QString& file) {
   if (running_) return false;
   try {
-    Scene scene = ReadScene(file.toStdString());
-    auto model = std::make_unique<ShellModel>(BuildShellModel(scene));
-    viewport_->makeCurrent();
-    renderer_.reset();
-    viewport_->doneCurrent();
-    scene_ = std::move(scene);
-    model_ = std::move(model);
+    // Checked whole before the document takes it: a scene that cannot be
+    // modelled is refused with the reader's or the engine's message.
+    BuildShellModel(ReadScene(file.toStdString()));
+    document_->open(file);
   } catch (const std::exception& e) {
     ShowError(this, "Cannot open the scene", QString::fromStdString(e.what()));
     statusBar()->showMessage(QString::fromStdString(e.what()));
     return false;
   }
-  steps_.clear();
   setWindowTitle(QFileInfo(file).fileName() + " — Drape Studio");
+  return model_ != nullptr;
+}
+
+bool MainWindow::saveScene(const QString& file) {
+  try {
+    document_->saveAs(file.isEmpty() ? document_->file() : file);
+    statusBar()->showMessage("saved " + document_->file());
+    setWindowTitle(QFileInfo(document_->file()).fileName() + " — Drape Studio");
+    return true;
+  } catch (const std::exception& e) {
+    ShowError(this, "Cannot save the scene", QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+// The scene changed (opened, edited, undone): a new model and view; the
+// steps of an earlier run no longer belong to it. An edit the engine cannot
+// model is taken back with its message.
+void MainWindow::onDocumentChanged() {
+  if (running_) return;  // cannot happen: edits are off during a run
+  std::unique_ptr<ShellModel> model;
+  try {
+    model = std::make_unique<ShellModel>(BuildShellModel(document_->scene()));
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(QString::fromStdString(e.what()));
+    if (document_->undoStack()->canUndo()) {
+      ShowError(this, "Edit refused", QString::fromStdString(e.what()));
+      QTimer::singleShot(0, this, [this] { document_->undoStack()->undo(); });
+    }
+    return;
+  }
+  viewport_->makeCurrent();
+  renderer_.reset();
+  viewport_->doneCurrent();
+  scene_ = document_->scene();
+  model_ = std::move(model);
+  steps_.clear();
   rebuildRenderer();
   timeline_->setRange(0, 0);
   showStep(0);
@@ -160,7 +228,6 @@ bool MainWindow::openScene(const QString& file) {
                                .arg(model_->NodeCount())
                                .arg(model_->mesh.ElementCount()));
   updateControls();
-  return true;
 }
 
 void MainWindow::rebuildRenderer() {

@@ -25,6 +25,8 @@ class QTimer;
 
 namespace drape {
 
+class PropertyPanel;
+class SceneDocument;
 class SolverWorker;
 class VtkViewport;
 
@@ -37,6 +39,10 @@ class MainWindow : public QMainWindow {
   // Loads a scene file; on error shows the message and keeps what was open.
   bool openScene(const QString& file);
   VtkViewport* viewport() const { return viewport_; }
+  SceneDocument* document() const { return document_; }
+  PropertyPanel* properties() const { return properties_; }
+  // Saves the scene (to `file`, or where it came from); false with a message.
+  bool saveScene(const QString& file = {});
   int stepCount() const { return static_cast<int>(steps_.size()); }
   // Step `i` (1-based, as the timeline counts).
   const StepState& step(int i) const { return *steps_.at(i - 1); }
@@ -71,6 +77,7 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildActions();
+  void onDocumentChanged();
   void rebuildRenderer();
   void updateControls();
 
@@ -79,11 +86,14 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<FrameRenderer> renderer_;
   std::vector<std::shared_ptr<const StepState>> steps_;
   VtkViewport* viewport_ = nullptr;
+  SceneDocument* document_ = nullptr;
+  PropertyPanel* properties_ = nullptr;
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
   QTimer* player_ = nullptr;
   RenderOptions view_;
   QLabel* step_label_ = nullptr;
+  QAction *undo_ = nullptr, *redo_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
   QThread* thread_ = nullptr;
   SolverWorker* worker_ = nullptr;

@@ -1,0 +1,221 @@
+#include "ui/widgets/property_panel.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+
+QuantityField::QuantityField(Dimension dimension,
+                             const QString& unit_hint,
+                             std::function<QString(double)> check,
+                             QWidget* parent)
+    : QWidget(parent), dimension_(dimension), check_(std::move(check)) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  edit_ = new QLineEdit(this);
+  edit_->setPlaceholderText(unit_hint);
+  edit_->setToolTip("a number and its unit, e.g. " + unit_hint);
+  message_ = new QLabel(this);
+  message_->setStyleSheet("color: #b00020");
+  message_->setWordWrap(true);
+  message_->hide();
+  layout->addWidget(edit_);
+  layout->addWidget(message_);
+  connect(edit_, &QLineEdit::editingFinished, this, &QuantityField::Commit);
+}
+
+void QuantityField::setValue(double si, const QString& text) {
+  // The same value keeps the unit the user typed it in.
+  if (!(si == value_ && !text_.isEmpty())) text_ = text;
+  value_ = si;
+  edit_->setText(text_);
+  message_->hide();
+}
+
+QString QuantityField::message() const {
+  return message_->isVisible() ? message_->text() : QString();
+}
+
+void QuantityField::Commit() {
+  const QString text = edit_->text().trimmed();
+  if (text == text_) return;
+  QString problem;
+  double si = 0;
+  try {
+    si = ParseQuantityAs(text.toStdString(), dimension_);
+    problem = check_ ? check_(si) : QString();
+  } catch (const UnitError& e) {
+    problem = QString::fromStdString(e.what());
+  }
+  if (!problem.isEmpty()) {
+    // The message stays; the field goes back to its last valid value.
+    message_->setText(problem);
+    message_->show();
+    edit_->setText(text_);
+    return;
+  }
+  message_->hide();
+  value_ = si;
+  text_ = text;
+  emit committed(si, text);
+}
+
+namespace {
+
+QString Positive(double v) {
+  return v > 0 && std::isfinite(v) ? QString() : "must be > 0";
+}
+QString NonNegative(double v) {
+  return v >= 0 && std::isfinite(v) ? QString() : "must be ≥ 0";
+}
+// SI value and unit as the field shows a value it did not type.
+QString Si(double v, const char* unit) {
+  return QString("%1 %2").arg(v, 0, 'g', 6).arg(unit);
+}
+
+struct Preset {
+  const char* name;
+  double tolerance;
+  int target_iterations;
+};
+// Fast and rough to slow and tight; "balanced" is the scene reader's default.
+constexpr Preset kPresets[] = {{"draft", 1e-3, 10}, {"balanced", 1e-5, 7}, {"accurate", 1e-7, 5}};
+
+}  // namespace
+
+PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), document_(document) {
+  auto* layout = new QVBoxLayout(this);
+
+  auto* fabric = new QGroupBox("Fabric mesh", this);
+  auto* fabric_form = new QFormLayout(fabric);
+  nx_ = new QSpinBox(fabric);
+  ny_ = new QSpinBox(fabric);
+  for (QSpinBox* s : {nx_, ny_}) s->setRange(1, 400);
+  mesh_info_ = new QLabel(fabric);
+  fabric_form->addRow("elements along x", nx_);
+  fabric_form->addRow("elements along y", ny_);
+  fabric_form->addRow(mesh_info_);
+  layout->addWidget(fabric);
+  for (QSpinBox* s : {nx_, ny_})
+    connect(s, &QSpinBox::editingFinished, this, &PropertyPanel::EditMesh);
+
+  auto* material = new QGroupBox("Material", this);
+  auto* form = new QFormLayout(material);
+  thickness_ = new QuantityField(dim::kLength, "0.5 mm", Positive, material);
+  weight_ = new QuantityField(dim::kPressure, "0.02665 gf/cm^2", NonNegative, material);
+  modulus_ = new QuantityField(dim::kPressure, "60450 gf/cm^2", Positive, material);
+  poisson_ = new QuantityField(
+      dim::kNone,
+      "0.3",
+      [](double v) { return v >= 0 && v < 0.5 ? QString() : QString("must lie in [0, 0.5)"); },
+      material);
+  angle_ = new QuantityField(dim::kAngle, "45 deg", nullptr, material);
+  form->addRow("thickness h", thickness_);
+  form->addRow("areal weight w", weight_);
+  form->addRow("Young's modulus E", modulus_);
+  form->addRow("Poisson's ratio ν", poisson_);
+  form->addRow("warp angle", angle_);
+  layout->addWidget(material);
+
+  auto edit = [this](const QString& what, auto change) {
+    return [this, what, change](double si, const QString& text) {
+      if (refreshing_) return;
+      Scene after = document_->scene();
+      change(after, si);
+      document_->apply(what + " " + text, after);
+    };
+  };
+  connect(thickness_, &QuantityField::committed, this, edit("thickness", [](Scene& s, double v) {
+            s.material.thickness = v;
+          }));
+  connect(weight_, &QuantityField::committed, this, edit("areal weight", [](Scene& s, double v) {
+            s.material.areal_weight = v;
+          }));
+  connect(
+      modulus_, &QuantityField::committed, this, edit("Young's modulus", [](Scene& s, double v) {
+        if (auto* m = std::get_if<IsotropicMembrane>(&s.material.membrane)) m->youngs_modulus = v;
+      }));
+  connect(
+      poisson_, &QuantityField::committed, this, edit("Poisson's ratio", [](Scene& s, double v) {
+        if (auto* m = std::get_if<IsotropicMembrane>(&s.material.membrane)) m->poisson_ratio = v;
+      }));
+  connect(angle_, &QuantityField::committed, this, edit("warp angle", [](Scene& s, double v) {
+            s.material.angle_deg = v * 180.0 / M_PI;
+          }));
+
+  auto* solver = new QGroupBox("Solver", this);
+  auto* solver_form = new QFormLayout(solver);
+  preset_ = new QComboBox(solver);
+  for (const Preset& p : kPresets)
+    preset_->addItem(
+        QString("%1 (tolerance %2, N_p %3)").arg(p.name).arg(p.tolerance).arg(p.target_iterations),
+        p.name);
+  preset_->addItem("custom", "custom");
+  solver_form->addRow("accuracy", preset_);
+  layout->addWidget(solver);
+  connect(preset_, &QComboBox::activated, this, [this](int i) {
+    if (refreshing_ || i >= static_cast<int>(std::size(kPresets))) return;
+    Scene after = document_->scene();
+    after.solver.tolerance = kPresets[i].tolerance;
+    after.solver.target_iterations = kPresets[i].target_iterations;
+    document_->apply(QString("solver preset %1").arg(kPresets[i].name), after);
+  });
+  layout->addStretch(1);
+  connect(document_, &SceneDocument::changed, this, &PropertyPanel::refresh);
+  refresh();
+}
+
+void PropertyPanel::EditMesh() {
+  if (refreshing_) return;
+  Scene after = document_->scene();
+  after.fabric.mesh.elements = std::array<int, 2>{nx_->value(), ny_->value()};
+  document_->apply(QString("mesh %1 × %2").arg(nx_->value()).arg(ny_->value()), after);
+}
+
+void PropertyPanel::refresh() {
+  refreshing_ = true;
+  const Scene& s = document_->scene();
+  const bool rectangle = std::holds_alternative<RectangleOutline>(s.fabric.outline);
+  nx_->setEnabled(rectangle);
+  ny_->setEnabled(rectangle);
+  if (s.fabric.mesh.elements) {
+    nx_->setValue((*s.fabric.mesh.elements)[0]);
+    ny_->setValue((*s.fabric.mesh.elements)[1]);
+    const int nodes = (nx_->value() + 1) * (ny_->value() + 1);
+    mesh_info_->setText(QString("%1 nodes, %2 elements, %3 DOFs")
+                            .arg(nodes)
+                            .arg(nx_->value() * ny_->value())
+                            .arg(5 * nodes));
+  } else {
+    mesh_info_->setText("meshed by size");
+  }
+  thickness_->setValue(s.material.thickness, Si(s.material.thickness, "m"));
+  weight_->setValue(s.material.areal_weight, Si(s.material.areal_weight, "Pa"));
+  const auto* iso = std::get_if<IsotropicMembrane>(&s.material.membrane);
+  modulus_->setEnabled(iso != nullptr);
+  poisson_->setEnabled(iso != nullptr);
+  if (iso) {
+    modulus_->setValue(iso->youngs_modulus, Si(iso->youngs_modulus, "Pa"));
+    poisson_->setValue(iso->poisson_ratio, QString::number(iso->poisson_ratio));
+  }
+  angle_->setValue(s.material.angle_deg * M_PI / 180, QString("%1 deg").arg(s.material.angle_deg));
+  int preset = static_cast<int>(std::size(kPresets));
+  for (int i = 0; i < static_cast<int>(std::size(kPresets)); ++i)
+    if (s.solver.tolerance == kPresets[i].tolerance &&
+        s.solver.target_iterations == kPresets[i].target_iterations)
+      preset = i;
+  preset_->setCurrentIndex(preset);
+  refreshing_ = false;
+}
+
+}  // namespace drape

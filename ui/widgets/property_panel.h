@@ -1,0 +1,81 @@
+// Property editors for the scene's fabric, material and solver: each field
+// shows its unit, is checked as it is committed (the same unit parser and
+// limits as the scene reader), shows what is wrong in place and keeps its
+// last valid value. Every accepted change goes to the SceneDocument as one
+// undoable edit.
+#pragma once
+
+#include <QWidget>
+
+#include <functional>
+
+#include "core/model/units.h"
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+
+namespace drape {
+
+class SceneDocument;
+
+// A quantity typed with its unit ("0.5 mm"), accepted when it has the
+// field's dimension and passes `check` (which returns "" or what is wrong).
+class QuantityField : public QWidget {
+  Q_OBJECT
+ public:
+  QuantityField(Dimension dimension,
+                const QString& unit_hint,
+                std::function<QString(double)> check,
+                QWidget* parent = nullptr);
+  // Shows `text` for the SI value `si`, unless the field already shows that
+  // value in the user's own unit.
+  void setValue(double si, const QString& text);
+  double value() const { return value_; }
+  QLineEdit* edit() const { return edit_; }
+  QString message() const;
+
+ signals:
+  void committed(double si, const QString& text);
+
+ private:
+  void Commit();
+
+  Dimension dimension_;
+  std::function<QString(double)> check_;
+  QLineEdit* edit_;
+  QLabel* message_;
+  double value_ = 0;
+  QString text_;
+};
+
+class PropertyPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PropertyPanel(SceneDocument* document, QWidget* parent = nullptr);
+
+  // For tests and scripts: the fields by name.
+  QuantityField* thickness() const { return thickness_; }
+  QuantityField* weight() const { return weight_; }
+  QuantityField* modulus() const { return modulus_; }
+  QSpinBox* elementsX() const { return nx_; }
+  QSpinBox* elementsY() const { return ny_; }
+  QComboBox* solverPreset() const { return preset_; }
+  QLabel* meshInfo() const { return mesh_info_; }
+
+ public slots:
+  void refresh();  // from the document's scene
+
+ private:
+  void EditMesh();
+
+  SceneDocument* document_;
+  QSpinBox *nx_, *ny_;
+  QLabel* mesh_info_;
+  QuantityField *thickness_, *weight_, *modulus_, *poisson_, *angle_;
+  QComboBox* preset_;
+  bool refreshing_ = false;
+};
+
+}  // namespace drape
