@@ -141,6 +141,7 @@ void VtkViewport::paintGL() {
   gl->glBlitFramebuffer(0, 0, source[0], source[1], 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
   if (scissor) gl->glEnable(GL_SCISSOR_TEST);
   state->Pop();
+  ++paints_;
   in_paint_ = false;
 }
 

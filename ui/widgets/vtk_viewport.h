@@ -34,6 +34,8 @@ class VtkViewport : public QOpenGLWidget {
   vtkGenericOpenGLRenderWindow* renderWindow() const;
   // Asks for a VTK render at the next paint (after the scene changed).
   void requestRender();
+  // Paints (VTK renders shown) since the viewport was made: for frame rates.
+  long long paints() const { return paints_; }
 
  protected:
   void initializeGL() override;
@@ -52,7 +54,8 @@ class VtkViewport : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   std::vector<unsigned long> observers_;
   bool in_paint_ = false;
-  int framebuffer_retries_ = 0;  // new framebuffers asked of Qt (see paintGL)
+  int framebuffer_retries_ = 0;
+  long long paints_ = 0;  // new framebuffers asked of Qt (see paintGL)
 };
 
 }  // namespace drape
