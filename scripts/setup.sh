@@ -17,7 +17,7 @@ DRAPE_PACKAGES=(
   # ffprobe checks them in the tests)
   libvtk9-dev libx11-dev ffmpeg
   # the workbench (ui/widgets): Qt 6 widgets and OpenGL widgets
-  qt6-base-dev libqt6opengl6-dev libgl-dev
+  qt6-base-dev libqt6opengl6-dev qt6-charts-dev libgl-dev
   # headless display for render and GUI tests
   xvfb xauth
 )

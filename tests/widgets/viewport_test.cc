@@ -5,12 +5,14 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <unistd.h>
 
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <QApplication>
+#include <QComboBox>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
@@ -26,6 +28,7 @@
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/material_dialog.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/vtk_viewport.h"
@@ -271,6 +274,57 @@ TEST_F(Widgets, EditsUndoRedoAndSurviveSaveAndReopen) {
   std::filesystem::remove(file);
   EXPECT_EQ(reread, doc->scene());
   EXPECT_FALSE(doc->isModified());
+}
+
+// The material dialog: a Kawabata file read with the scene reader's code,
+// drawn with its law, applied as one undoable edit; a bad file says which
+// line; a library material replaces the material.
+TEST_F(Widgets, MaterialDialogImportsKawabataDataAndLibraryMaterials) {
+  MainWindow window;
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
+  SceneDocument* doc = window.document();
+  const Scene original = doc->scene();
+  MaterialDialog dialog(doc);
+  const std::string csv =
+      (test::SourceDir() / "resources/materials/kawabata/cotton-twill-warp.csv").string();
+  dialog.file()->setText(QString::fromStdString(csv));
+  ASSERT_TRUE(dialog.preview()) << dialog.message().toStdString();
+  EXPECT_EQ(dialog.measuredPoints(), 51);  // −2.5 … 2.5 1/cm, branches averaged
+  ASSERT_TRUE(dialog.applyBending());
+  const auto& curve = std::get<CurveBending>(doc->scene().material.bending.warp);
+  ASSERT_EQ(curve.points.size(), 51u);
+  // At K = 1 1/cm the averaged data are the paper's law, Σ cₖ gf·cm/cm.
+  EXPECT_NEAR(
+      curve.points[35][1], (1.33387 - 2.23070 + 2.36510 - 1.08471 + 0.17876) * 9.80665e-3, 1e-12);
+  // The polynomial fit of the same data: the paper's coefficients back (SI).
+  dialog.law()->setCurrentIndex(dialog.law()->findData("polynomial"));
+  ASSERT_TRUE(dialog.preview());
+  if (getenv("DRAPE_DIALOG_SHOT")) {
+    dialog.show();
+    QTest::qWait(200);
+    dialog.grab().save(getenv("DRAPE_DIALOG_SHOT"));
+  }
+  ASSERT_TRUE(dialog.applyBending());
+  const auto& poly = std::get<PolynomialBending>(doc->scene().material.bending.warp);
+  EXPECT_NEAR(poly.coefficients[0], 1.33387 * 9.80665e-5, 1e-9);
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene(), original);
+
+  const auto bad = std::filesystem::temp_directory_path() / "drape-dialog-bad.csv";
+  std::ofstream(bad) << "curvature (1/cm),moment (gf*cm/cm)\n0,0\n0.1,x\n";
+  dialog.file()->setText(QString::fromStdString(bad.string()));
+  EXPECT_FALSE(dialog.preview());
+  EXPECT_NE(dialog.message().toStdString().find("line 3"), std::string::npos)
+      << dialog.message().toStdString();
+  EXPECT_FALSE(dialog.applyBending());
+  std::filesystem::remove(bad);
+
+  dialog.library()->setCurrentText("cotton-twill");
+  ASSERT_TRUE(dialog.applyLibrary()) << dialog.message().toStdString();
+  EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.0489e-2);
+  EXPECT_TRUE(std::holds_alternative<PolynomialBending>(doc->scene().material.bending.warp));
 }
 
 // The automation CI uses: open, run, screenshot, quit.

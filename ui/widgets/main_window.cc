@@ -24,6 +24,7 @@
 #include "core/model/outline_geometry.h"
 #include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/material_dialog.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
@@ -115,6 +116,12 @@ void MainWindow::buildActions() {
   redo_->setShortcut(QKeySequence::Redo);
   edit->addAction(undo_);
   edit->addAction(redo_);
+  edit->addSeparator();
+  material_ = edit->addAction("&Material…", this, [this] {
+    auto* dialog = new MaterialDialog(document_, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+  });
   QToolBar* bar = addToolBar("Run");
   open_ = bar->addAction("Open…", this, [this] {
     const QString file = QFileDialog::getOpenFileName(this, "Open scene", {}, "Scenes (*.json)");
@@ -162,6 +169,7 @@ void MainWindow::updateControls() {
   run_->setEnabled(loaded && !running_);
   // A run works on the scene it started with: no edits meanwhile.
   properties_->setEnabled(!running_);
+  material_->setEnabled(!running_ && model_ != nullptr);
   undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
   redo_->setEnabled(!running_ && document_->undoStack()->canRedo());
   pause_->setEnabled(running_);

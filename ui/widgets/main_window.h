@@ -93,7 +93,7 @@ class MainWindow : public QMainWindow {
   QTimer* player_ = nullptr;
   RenderOptions view_;
   QLabel* step_label_ = nullptr;
-  QAction *undo_ = nullptr, *redo_ = nullptr;
+  QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
   QThread* thread_ = nullptr;
   SolverWorker* worker_ = nullptr;

@@ -1,0 +1,228 @@
+#include "ui/widgets/material_dialog.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QPushButton>
+#include <QScatterSeries>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <QValueAxis>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/io/kawabata_reader.h"
+#include "core/io/material_library.h"
+#include "core/io/scene_reader.h"
+#include "core/io/scene_writer.h"
+#include "core/mechanics/moment_curvature.h"
+#include "core/mechanics/moment_curvature_fit.h"
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+namespace {
+
+constexpr double kPerCm = 100.0;           // 1/m per 1/cm
+constexpr double kGfCmPerCm = 9.80665e-3;  // N·m/m per gf·cm/cm
+
+std::filesystem::path SceneDirectory(const SceneDocument* document) {
+  return document->file().isEmpty()
+             ? std::filesystem::current_path()
+             : std::filesystem::path(document->file().toStdString()).parent_path();
+}
+
+}  // namespace
+
+MaterialDialog::MaterialDialog(SceneDocument* document, QWidget* parent)
+    : QDialog(parent), document_(document) {
+  setWindowTitle("Material");
+  auto* layout = new QVBoxLayout(this);
+
+  auto* library_row = new QHBoxLayout;
+  library_ = new QComboBox(this);
+  for (const auto& name : LibraryMaterialNames(MaterialLibraryDirs(SceneDirectory(document))))
+    library_->addItem(QString::fromStdString(name));
+  auto* use_library = new QPushButton("Use library material", this);
+  library_row->addWidget(new QLabel("Library:", this));
+  library_row->addWidget(library_, 1);
+  library_row->addWidget(use_library);
+  layout->addLayout(library_row);
+  connect(use_library, &QPushButton::clicked, this, &MaterialDialog::applyLibrary);
+
+  auto* form = new QFormLayout;
+  auto* file_row = new QHBoxLayout;
+  file_ = new QLineEdit(this);
+  auto* browse = new QPushButton("Browse…", this);
+  file_row->addWidget(file_, 1);
+  file_row->addWidget(browse);
+  form->addRow("Kawabata file", file_row);
+  connect(browse, &QPushButton::clicked, this, [this] {
+    const QString f =
+        QFileDialog::getOpenFileName(this, "Kawabata data", {}, "KES data (*.csv *.tsv *.txt)");
+    if (!f.isEmpty()) {
+      file_->setText(f);
+      preview();
+    }
+  });
+  branch_ = new QComboBox(this);
+  branch_->addItems({"average", "loading", "unloading"});
+  form->addRow("branch", branch_);
+  curvature_column_ = new QLineEdit(this);
+  curvature_column_->setPlaceholderText("found by name");
+  moment_column_ = new QLineEdit(this);
+  moment_column_->setPlaceholderText("found by name");
+  form->addRow("curvature column", curvature_column_);
+  form->addRow("moment column", moment_column_);
+  law_ = new QComboBox(this);
+  law_->addItem("measured curve (monotone spline through the points)", "curve");
+  law_->addItem("polynomial M = Σ cₖ Kᵏ (the paper's fit)", "polynomial");
+  form->addRow("law", law_);
+  degree_ = new QSpinBox(this);
+  degree_->setRange(1, 9);
+  degree_->setValue(5);
+  form->addRow("polynomial degree", degree_);
+  layout->addLayout(form);
+
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  layout->addWidget(message_);
+  chart_ = new QChart;
+  chart_->legend()->setAlignment(Qt::AlignBottom);
+  auto* view = new QChartView(chart_, this);
+  view->setMinimumSize(480, 300);
+  layout->addWidget(view, 1);
+
+  auto* buttons = new QDialogButtonBox(this);
+  QPushButton* show = buttons->addButton("Preview", QDialogButtonBox::ActionRole);
+  QPushButton* apply = buttons->addButton("Apply bending law", QDialogButtonBox::ApplyRole);
+  buttons->addButton(QDialogButtonBox::Close);
+  layout->addWidget(buttons);
+  connect(show, &QPushButton::clicked, this, &MaterialDialog::preview);
+  connect(apply, &QPushButton::clicked, this, &MaterialDialog::applyBending);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+}
+
+QString MaterialDialog::message() const {
+  return message_->text();
+}
+
+bool MaterialDialog::preview() {
+  previewed_.reset();
+  measured_points_ = 0;
+  chart_->removeAllSeries();
+  for (QAbstractAxis* axis : chart_->axes()) chart_->removeAxis(axis);
+  KawabataOptions options;
+  options.branch = branch_->currentIndex() == 0   ? KawabataBranch::kAverage
+                   : branch_->currentIndex() == 1 ? KawabataBranch::kLoading
+                                                  : KawabataBranch::kUnloading;
+  options.curvature_column = curvature_column_->text().trimmed().toStdString();
+  options.moment_column = moment_column_->text().trimmed().toStdString();
+  try {
+    const KawabataCurve curve = ReadKawabata(file_->text().toStdString(), options);
+    std::vector<double> k, m;
+    for (size_t i = 0; i < curve.curvature.size(); ++i) {
+      k.push_back(curve.curvature[i] / kPerCm);
+      m.push_back(curve.moment[i] / kGfCmPerCm);
+    }
+    std::shared_ptr<const MomentCurvatureLaw> law;
+    double rms = 0;
+    if (law_->currentData().toString() == "polynomial") {
+      const PolynomialFit fit = FitOddPolynomial(k, m, degree_->value());
+      law = MakePolynomialLaw(fit.coefficients, fit.valid_to);
+      rms = fit.rms_error;
+      PolynomialBending p;
+      for (size_t i = 0; i < fit.coefficients.size(); ++i)
+        p.coefficients.push_back(fit.coefficients[i] * kGfCmPerCm * std::pow(kPerCm, -(i + 1.0)));
+      p.valid_to = fit.valid_to * kPerCm;
+      previewed_ = p;
+    } else {
+      std::vector<std::array<double, 2>> points;
+      for (size_t i = 0; i < k.size(); ++i) points.push_back({k[i], m[i]});
+      law = MakeCurveLaw(points);
+      CurveBending c;
+      for (size_t i = 0; i < curve.curvature.size(); ++i)
+        c.points.push_back({curve.curvature[i], curve.moment[i]});
+      c.file = file_->text().toStdString();
+      c.branch = branch_->currentText().toStdString();
+      c.curvature_column = options.curvature_column;
+      c.moment_column = options.moment_column;
+      previewed_ = c;
+    }
+    // The measured points and the law over the data's range, in KES units.
+    auto* measured = new QScatterSeries;
+    measured->setName("measured");
+    measured->setMarkerSize(6);
+    auto* fitted = new QLineSeries;
+    fitted->setName(law_->currentData().toString() == "polynomial" ? "polynomial fit"
+                                                                   : "curve law");
+    const double lo = *std::min_element(k.begin(), k.end()),
+                 hi = *std::max_element(k.begin(), k.end());
+    for (size_t i = 0; i < k.size(); ++i) measured->append(k[i], m[i]);
+    for (int i = 0; i <= 200; ++i) {
+      const double x = lo + (hi - lo) * i / 200.0;
+      fitted->append(x, law->Moment(x));
+    }
+    chart_->addSeries(measured);
+    chart_->addSeries(fitted);
+    auto* x_axis = new QValueAxis;
+    x_axis->setTitleText("curvature K [1/cm]");
+    auto* y_axis = new QValueAxis;
+    y_axis->setTitleText("moment M [gf·cm/cm]");
+    chart_->addAxis(x_axis, Qt::AlignBottom);
+    chart_->addAxis(y_axis, Qt::AlignLeft);
+    for (QAbstractSeries* s : chart_->series()) {
+      s->attachAxis(x_axis);
+      s->attachAxis(y_axis);
+    }
+    measured_points_ = static_cast<int>(k.size());
+    QString text = QString("%1 points, K from %2 to %3 1/cm").arg(k.size()).arg(lo).arg(hi);
+    if (law_->currentData().toString() == "polynomial")
+      text += QString(", RMS error %1 gf·cm/cm").arg(rms, 0, 'g', 3);
+    for (const auto& w : curve.warnings) text += "\nwarning: " + QString::fromStdString(w);
+    message_->setStyleSheet("");
+    message_->setText(text);
+    return true;
+  } catch (const std::exception& e) {
+    message_->setStyleSheet("color: #b00020");
+    message_->setText(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+bool MaterialDialog::applyBending() {
+  if (!previewed_ && !preview()) return false;
+  Scene after = document_->scene();
+  after.material.bending = Bending{*previewed_, std::nullopt};
+  document_->apply("bending law from " + QFileInfo(file_->text()).fileName(), after);
+  return true;
+}
+
+bool MaterialDialog::applyLibrary() {
+  if (library_->currentText().isEmpty()) return false;
+  // The scene reader resolves the name, as for a scene that names it.
+  try {
+    nlohmann::ordered_json doc = SceneToJson(document_->scene());
+    doc["material"] = {{"library", library_->currentText().toStdString()}};
+    Scene after = document_->scene();
+    after.material =
+        SceneFromJson(nlohmann::json::parse(doc.dump()), SceneDirectory(document_)).material;
+    document_->apply("material " + library_->currentText(), after);
+    return true;
+  } catch (const std::exception& e) {
+    message_->setStyleSheet("color: #b00020");
+    message_->setText(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+}  // namespace drape

@@ -1,0 +1,58 @@
+// The material dialog: a library material, or a bending law imported from
+// Kawabata (KES-FB2) data — file, branch, columns, law (the measured curve
+// or the paper's polynomial) — with the measured points and the law drawn
+// together (Qt Charts) and the fit's RMS error. The same reader and fits as
+// the scene reader and `drape material fit`. Apply makes one undoable edit.
+#pragma once
+
+#include <QDialog>
+
+#include <optional>
+
+#include "core/model/scene.h"
+
+class QChart;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+
+namespace drape {
+
+class SceneDocument;
+
+class MaterialDialog : public QDialog {
+  Q_OBJECT
+ public:
+  explicit MaterialDialog(SceneDocument* document, QWidget* parent = nullptr);
+
+  // The controls, for tests and scripts.
+  QLineEdit* file() const { return file_; }
+  QComboBox* branch() const { return branch_; }
+  QComboBox* law() const { return law_; }
+  QSpinBox* degree() const { return degree_; }
+  QComboBox* library() const { return library_; }
+
+  // Reads the file and fits the law; false with the reader's message (line
+  // and problem) shown in the dialog.
+  bool preview();
+  QString message() const;
+  int measuredPoints() const { return measured_points_; }
+  // The previewed law into the scene's bending (one edit); false if none.
+  bool applyBending();
+  // The library material chosen into the scene (one edit).
+  bool applyLibrary();
+
+ private:
+  SceneDocument* document_;
+  QLineEdit* file_;
+  QComboBox *branch_, *law_, *library_;
+  QLineEdit *curvature_column_, *moment_column_;
+  QSpinBox* degree_;
+  QLabel* message_;
+  QChart* chart_;
+  std::optional<BendingLaw> previewed_;
+  int measured_points_ = 0;
+};
+
+}  // namespace drape
