@@ -4,7 +4,9 @@
 // the window's 3-D view, quit.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
 #include <QImage>
+#include <QMessageBox>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -63,6 +65,13 @@ int main(int argc, char** argv) {
 
   drape::MainWindow window;
   window.show();
+  // An autosave left behind is a crash's: offer it back (not to scripts).
+  if (!parser.isSet(quit) && QFileInfo::exists(drape::MainWindow::autosavePath()) &&
+      QMessageBox::question(&window,
+                            "Recover",
+                            "Drape Studio did not close cleanly last time. "
+                            "Recover the autosaved scene?") == QMessageBox::Yes)
+    window.recoverAutosave();
   const QStringList scenes = parser.positionalArguments();
   if (!scenes.isEmpty() && !window.openScene(scenes.front())) {
     std::fprintf(stderr, "drape-studio: cannot open %s\n", qPrintable(scenes.front()));

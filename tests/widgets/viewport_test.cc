@@ -13,11 +13,14 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <QApplication>
 #include <QComboBox>
+#include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QTest>
 #include <QUndoStack>
 
@@ -63,6 +66,10 @@ class Widgets : public ::testing::Test {
     // QApplication would, and its destructor then crashed the process.
     static QApplication* app = new QApplication(argc, argv);
     (void)app;
+    // Settings and autosaves of the tests stay out of the user's own.
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication::setOrganizationName("Drape Studio tests");
+    QApplication::setApplicationName("widgets_tests");
   }
   void SetUp() override {
     if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
@@ -331,6 +338,31 @@ TEST_F(Widgets, MaterialDialogImportsKawabataDataAndLibraryMaterials) {
   ASSERT_TRUE(dialog.applyLibrary()) << dialog.message().toStdString();
   EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.0489e-2);
   EXPECT_TRUE(std::holds_alternative<PolynomialBending>(doc->scene().material.bending.warp));
+}
+
+// After a crash the edits come back: autosaved, then recovered by a new
+// window as an undoable edit; opened files are remembered.
+TEST_F(Widgets, AutosavedEditsAreRecoveredAndFilesRemembered) {
+  const QString scene = QString::fromStdString((test::ScenesDir() / "strip-fold.json").string());
+  Scene edited;
+  {
+    MainWindow window;
+    ASSERT_TRUE(window.openScene(scene));
+    EXPECT_EQ(window.recentFiles().value(0), QFileInfo(scene).absoluteFilePath());
+    QLineEdit* h = window.properties()->thickness()->edit();
+    h->setText("0.7 mm");
+    emit h->editingFinished();
+    edited = window.document()->scene();
+    ASSERT_TRUE(window.autosave());
+    ASSERT_TRUE(QFileInfo::exists(MainWindow::autosavePath()));
+  }  // no close: as if it crashed
+  MainWindow again;
+  ASSERT_TRUE(again.recoverAutosave());
+  EXPECT_EQ(again.document()->scene(), edited);
+  EXPECT_TRUE(again.document()->isModified());
+  again.document()->undoStack()->undo();
+  EXPECT_DOUBLE_EQ(again.document()->scene().material.thickness, 0.0469e-2);
+  QFile::remove(MainWindow::autosavePath());
 }
 
 // The automation CI uses: open, run, screenshot, quit.

@@ -2,8 +2,10 @@
 
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <QAction>
+#include <QCloseEvent>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -12,7 +14,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QSettings>
 #include <QSlider>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QThread>
 #include <QTimer>
@@ -21,6 +25,7 @@
 #include <QVBoxLayout>
 
 #include "core/io/scene_reader.h"
+#include "core/io/scene_writer.h"
 #include "core/model/outline_geometry.h"
 #include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
@@ -93,6 +98,90 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   buildActions();
   updateControls();
   resize(1100, 760);
+  QSettings settings;
+  if (settings.contains("window/geometry"))
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+  autosave_timer_ = new QTimer(this);
+  autosave_timer_->setInterval(60 * 1000);
+  connect(autosave_timer_, &QTimer::timeout, this, &MainWindow::autosave);
+  autosave_timer_->start();
+}
+
+QString MainWindow::autosavePath() {
+  const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+  QDir().mkpath(dir);
+  return dir + "/autosave.json";
+}
+
+bool MainWindow::autosave() {
+  if (!model_ || !document_->isModified()) return false;
+  try {
+    WriteScene(document_->scene(), autosavePath().toStdString());
+    QSettings().setValue("autosave/source", document_->file());
+    return true;
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(QString("autosave failed: ") + e.what());
+    return false;
+  }
+}
+
+bool MainWindow::recoverAutosave() {
+  const QString file = autosavePath();
+  if (!QFileInfo::exists(file) || running_) return false;
+  const QString source = QSettings().value("autosave/source").toString();
+  try {
+    // Relative references resolve next to where the scene came from.
+    Scene recovered = ReadScene(file.toStdString());
+    if (!source.isEmpty() && QFileInfo::exists(source)) {
+      document_->open(source);
+    }
+    document_->apply("recovered edits", recovered);
+    statusBar()->showMessage("recovered the autosaved scene; save it to keep it");
+    return true;
+  } catch (const std::exception& e) {
+    ShowError(this, "Cannot recover the autosaved scene", QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+QStringList MainWindow::recentFiles() const {
+  return QSettings().value("recent").toStringList();
+}
+
+void MainWindow::rememberRecent(const QString& file) {
+  QStringList recent = recentFiles();
+  const QString absolute = QFileInfo(file).absoluteFilePath();
+  recent.removeAll(absolute);
+  recent.prepend(absolute);
+  while (recent.size() > 8) recent.removeLast();
+  QSettings().setValue("recent", recent);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recent_menu_->clear();
+  for (const QString& file : recentFiles())
+    recent_menu_->addAction(QFileInfo(file).fileName(), this, [this, file] { openScene(file); })
+        ->setToolTip(file);
+  recent_menu_->setEnabled(!recent_menu_->isEmpty());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (document_->isModified()) {
+    const auto answer =
+        QMessageBox::question(this,
+                              "Unsaved changes",
+                              "Save the changes to the scene before closing?",
+                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Cancel || (answer == QMessageBox::Save && !saveScene())) {
+      event->ignore();
+      return;
+    }
+  }
+  stop();
+  QSettings().setValue("window/geometry", saveGeometry());
+  QFile::remove(autosavePath());  // a clean close: nothing to recover
+  event->accept();
 }
 
 MainWindow::~MainWindow() {
@@ -109,6 +198,10 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::buildActions() {
+  QMenu* file = menuBar()->addMenu("&File");
+  recent_menu_ = file->addMenu("Open &recent");
+  rebuildRecentMenu();
+  file->addAction("Recover autosaved scene", this, &MainWindow::recoverAutosave);
   QMenu* edit = menuBar()->addMenu("&Edit");
   undo_ = document_->undoStack()->createUndoAction(this, "&Undo");
   undo_->setShortcut(QKeySequence::Undo);
@@ -191,6 +284,7 @@ bool MainWindow::openScene(const QString& file) {
     return false;
   }
   setWindowTitle(QFileInfo(file).fileName() + " — Drape Studio");
+  rememberRecent(file);
   return model_ != nullptr;
 }
 

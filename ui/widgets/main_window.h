@@ -17,6 +17,8 @@
 #include "ui/widgets/meta_types.h"
 
 class QAction;
+class QCloseEvent;
+class QMenu;
 class QComboBox;
 class QLabel;
 class QSlider;
@@ -43,6 +45,14 @@ class MainWindow : public QMainWindow {
   PropertyPanel* properties() const { return properties_; }
   // Saves the scene (to `file`, or where it came from); false with a message.
   bool saveScene(const QString& file = {});
+
+  // Autosave: the edited scene is written every minute to autosavePath();
+  // a clean close removes it, so one found at start is a crash's.
+  static QString autosavePath();
+  bool autosave();
+  // Opens the autosaved scene (its edits become unsaved changes again).
+  bool recoverAutosave();
+  QStringList recentFiles() const;
   int stepCount() const { return static_cast<int>(steps_.size()); }
   // Step `i` (1-based, as the timeline counts).
   const StepState& step(int i) const { return *steps_.at(i - 1); }
@@ -77,6 +87,9 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildActions();
+  void rememberRecent(const QString& file);
+  void rebuildRecentMenu();
+  void closeEvent(QCloseEvent* event) override;
   void onDocumentChanged();
   void rebuildRenderer();
   void updateControls();
@@ -91,6 +104,8 @@ class MainWindow : public QMainWindow {
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
   QTimer* player_ = nullptr;
+  QTimer* autosave_timer_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
   RenderOptions view_;
   QLabel* step_label_ = nullptr;
   QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr;
