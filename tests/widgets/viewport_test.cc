@@ -33,6 +33,7 @@
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/material_dialog.h"
 #include "ui/widgets/property_panel.h"
+#include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/vtk_viewport.h"
 
@@ -125,6 +126,9 @@ TEST_F(Widgets, WorkbenchShowsEveryStepOfARunInOrder) {
   const auto summary = finished.takeFirst().at(0).value<SolveSummary>();
   EXPECT_TRUE(summary.IsComplete()) << summary.message;
   EXPECT_EQ(window.stepCount(), summary.steps);
+  // The live plot has every step and a mark per stability change.
+  EXPECT_EQ(window.plot()->points(), summary.steps);
+  EXPECT_EQ(window.plot()->stabilityMarks(), static_cast<int>(summary.stability_events.size()));
   QTest::qWait(100);
   const QImage shown = window.viewport()->grabFramebuffer();
   // The viewport draws what the offscreen renderer draws of the last step

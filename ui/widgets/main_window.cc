@@ -31,6 +31,7 @@
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/material_dialog.h"
 #include "ui/widgets/property_panel.h"
+#include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
 #include "ui/widgets/vtk_viewport.h"
@@ -90,6 +91,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* dock = new QDockWidget("Properties", this);
   dock->setWidget(properties_);
   addDockWidget(Qt::LeftDockWidgetArea, dock);
+  plot_ = new RunPlot(this);
+  auto* plot_dock = new QDockWidget("Run", this);
+  plot_dock->setWidget(plot_);
+  addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
   connect(document_, &SceneDocument::changed, this, &MainWindow::onDocumentChanged);
   connect(timeline_, &QSlider::valueChanged, this, [this](int i) {
     follow_ = i == stepCount();
@@ -97,7 +102,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   buildActions();
   updateControls();
-  resize(1100, 760);
+  resize(1280, 960);
   QSettings settings;
   if (settings.contains("window/geometry"))
     restoreGeometry(settings.value("window/geometry").toByteArray());
@@ -491,6 +496,7 @@ void MainWindow::showStep(int index) {
 void MainWindow::run() {
   if (!model_ || running_) return;
   steps_.clear();
+  plot_->clear();
   timeline_->setRange(0, 0);
   follow_ = true;
   thread_ = new QThread(this);
@@ -526,6 +532,7 @@ void MainWindow::stop() {
 }
 
 void MainWindow::onStep(std::shared_ptr<const StepState> step) {
+  plot_->add(*step);
   steps_.push_back(std::move(step));
   const QSignalBlocker block(timeline_);
   timeline_->setRange(0, stepCount());

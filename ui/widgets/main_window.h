@@ -28,6 +28,7 @@ class QTimer;
 namespace drape {
 
 class PropertyPanel;
+class RunPlot;
 class SceneDocument;
 class SolverWorker;
 class VtkViewport;
@@ -43,6 +44,7 @@ class MainWindow : public QMainWindow {
   VtkViewport* viewport() const { return viewport_; }
   SceneDocument* document() const { return document_; }
   PropertyPanel* properties() const { return properties_; }
+  RunPlot* plot() const { return plot_; }
   // Saves the scene (to `file`, or where it came from); false with a message.
   bool saveScene(const QString& file = {});
 
@@ -101,6 +103,7 @@ class MainWindow : public QMainWindow {
   VtkViewport* viewport_ = nullptr;
   SceneDocument* document_ = nullptr;
   PropertyPanel* properties_ = nullptr;
+  RunPlot* plot_ = nullptr;
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
   QTimer* player_ = nullptr;

@@ -1,0 +1,81 @@
+#include "ui/widgets/run_plot.h"
+
+#include <QChart>
+#include <QLineSeries>
+#include <QScatterSeries>
+#include <QValueAxis>
+
+#include <algorithm>
+
+#include "core/solve/step_state.h"
+
+namespace drape {
+
+RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
+  auto* chart = new QChart;
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  lambda_ = new QLineSeries;
+  lambda_->setName("λ of the stage");
+  iterations_ = new QLineSeries;
+  iterations_->setName("Newton iterations");
+  stability_ = new QScatterSeries;
+  stability_->setName("negative pivots changed");
+  stability_->setMarkerSize(9);
+  stability_->setColor(QColor(200, 30, 30));
+  chart->addSeries(lambda_);
+  chart->addSeries(iterations_);
+  chart->addSeries(stability_);
+  steps_axis_ = new QValueAxis;
+  steps_axis_->setTitleText("step");
+  steps_axis_->setLabelFormat("%d");
+  lambda_axis_ = new QValueAxis;
+  lambda_axis_->setTitleText("λ");
+  lambda_axis_->setRange(0, 1);
+  iterations_axis_ = new QValueAxis;
+  iterations_axis_->setTitleText("iterations");
+  iterations_axis_->setLabelFormat("%d");
+  chart->addAxis(steps_axis_, Qt::AlignBottom);
+  chart->addAxis(lambda_axis_, Qt::AlignLeft);
+  chart->addAxis(iterations_axis_, Qt::AlignRight);
+  for (QAbstractSeries* s :
+       {static_cast<QAbstractSeries*>(lambda_), static_cast<QAbstractSeries*>(stability_)}) {
+    s->attachAxis(steps_axis_);
+    s->attachAxis(lambda_axis_);
+  }
+  iterations_->attachAxis(steps_axis_);
+  iterations_->attachAxis(iterations_axis_);
+  setChart(chart);
+  setRenderHint(QPainter::Antialiasing);
+  setMinimumHeight(230);
+  clear();
+}
+
+void RunPlot::clear() {
+  lambda_->clear();
+  iterations_->clear();
+  stability_->clear();
+  last_pivots_ = 0;
+  max_iterations_ = 1;
+  steps_axis_->setRange(0, 10);
+  iterations_axis_->setRange(0, 10);
+}
+
+void RunPlot::add(const StepState& step) {
+  lambda_->append(step.step, step.lambda);
+  iterations_->append(step.step, step.iterations);
+  if (step.negative_pivots != last_pivots_) stability_->append(step.step, step.lambda);
+  last_pivots_ = step.negative_pivots;
+  max_iterations_ = std::max(max_iterations_, step.iterations);
+  steps_axis_->setRange(0, std::max(10, step.step));
+  iterations_axis_->setRange(0, std::max(10, max_iterations_));
+}
+
+int RunPlot::points() const {
+  return static_cast<int>(lambda_->count());
+}
+
+int RunPlot::stabilityMarks() const {
+  return static_cast<int>(stability_->count());
+}
+
+}  // namespace drape
