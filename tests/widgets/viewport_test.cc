@@ -369,6 +369,25 @@ TEST_F(Widgets, AutosavedEditsAreRecoveredAndFilesRemembered) {
   QFile::remove(MainWindow::autosavePath());
 }
 
+// A template opens as a new scene; saved elsewhere it keeps finding the
+// files it names (the dress form's mesh).
+TEST_F(Widgets, TemplateSavedElsewhereStillFindsItsFiles) {
+  MainWindow window;
+  ASSERT_TRUE(window.newFromTemplate(
+      QString::fromStdString((test::ScenesDir() / "dress-form-drape.json").string())));
+  EXPECT_TRUE(window.document()->file().isEmpty());
+  const std::string file =
+      (std::filesystem::temp_directory_path() / ("scarf-" + std::to_string(getpid()) + ".json"))
+          .string();
+  ASSERT_TRUE(window.saveScene(QString::fromStdString(file)));
+  const Scene reread = ReadScene(file);  // throws if the mesh is not found
+  std::filesystem::remove(file);
+  ASSERT_FALSE(reread.obstacles.empty());
+  const auto& mesh = std::get<MeshShape>(reread.obstacles[0].shape);
+  EXPECT_TRUE(std::filesystem::path(mesh.file).is_absolute()) << mesh.file;
+  EXPECT_TRUE(std::filesystem::exists(mesh.file));
+}
+
 // The automation CI uses: open, run, screenshot, quit.
 TEST_F(Widgets, StudioRunsAScriptAndWritesANonBlackScreenshot) {
   const std::string shot = (std::filesystem::temp_directory_path() /

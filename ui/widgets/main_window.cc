@@ -206,6 +206,12 @@ void MainWindow::buildActions() {
   QMenu* file = menuBar()->addMenu("&File");
   recent_menu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
+  QMenu* templates = file->addMenu("&New from template");
+  const QDir scenes(QString(DRAPE_RESOURCE_DIR) + "/scenes");
+  for (const QString& name : scenes.entryList({"*.json"}, QDir::Files, QDir::Name))
+    templates->addAction(QFileInfo(name).completeBaseName(),
+                         this,
+                         [this, path = scenes.filePath(name)] { newFromTemplate(path); });
   file->addAction("Recover autosaved scene", this, &MainWindow::recoverAutosave);
   QMenu* edit = menuBar()->addMenu("&Edit");
   undo_ = document_->undoStack()->createUndoAction(this, "&Undo");
@@ -290,6 +296,19 @@ bool MainWindow::openScene(const QString& file) {
   }
   setWindowTitle(QFileInfo(file).fileName() + " — Drape Studio");
   rememberRecent(file);
+  return model_ != nullptr;
+}
+
+bool MainWindow::newFromTemplate(const QString& file) {
+  if (running_) return false;
+  try {
+    BuildShellModel(ReadScene(file.toStdString()));
+    document_->openTemplate(file);
+  } catch (const std::exception& e) {
+    ShowError(this, "Cannot open the template", QString::fromStdString(e.what()));
+    return false;
+  }
+  setWindowTitle("untitled (" + QFileInfo(file).completeBaseName() + ") — Drape Studio");
   return model_ != nullptr;
 }
 

@@ -45,6 +45,8 @@ class MainWindow : public QMainWindow {
   SceneDocument* document() const { return document_; }
   PropertyPanel* properties() const { return properties_; }
   RunPlot* plot() const { return plot_; }
+  // A new unsaved scene from a template (resources/scenes/*.json).
+  bool newFromTemplate(const QString& file);
   // Saves the scene (to `file`, or where it came from); false with a message.
   bool saveScene(const QString& file = {});
 

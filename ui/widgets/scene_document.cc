@@ -1,6 +1,9 @@
 #include "ui/widgets/scene_document.h"
 
+#include <QFileInfo>
 #include <QUndoCommand>
+
+#include <filesystem>
 
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
@@ -30,14 +33,36 @@ void SceneDocument::open(const QString& file) {
   Scene scene = ReadScene(file.toStdString());
   scene_ = std::move(scene);
   file_ = file;
+  origin_ = QFileInfo(file).absolutePath();
   undo_.clear();
   undo_.setClean();
   emit changed();
 }
 
+void SceneDocument::openTemplate(const QString& file) {
+  open(file);
+  file_.clear();
+}
+
 void SceneDocument::saveAs(const QString& file) {
-  WriteScene(scene_, file.toStdString());
+  Scene out = scene_;
+  if (!origin_.isEmpty() && QFileInfo(file).absolutePath() != origin_) {
+    const std::filesystem::path from = origin_.toStdString();
+    auto absolute = [&](std::string& reference) {
+      if (!reference.empty() && std::filesystem::path(reference).is_relative())
+        reference = std::filesystem::absolute(from / reference).lexically_normal().string();
+    };
+    for (BendingLaw* law : {&out.material.bending.warp,
+                            out.material.bending.weft ? &*out.material.bending.weft : nullptr})
+      if (law)
+        if (auto* curve = std::get_if<CurveBending>(law)) absolute(curve->file);
+    for (Obstacle& o : out.obstacles)
+      if (auto* mesh = std::get_if<MeshShape>(&o.shape)) absolute(mesh->file);
+  }
+  WriteScene(out, file.toStdString());
+  scene_ = out;
   file_ = file;
+  origin_ = QFileInfo(file).absolutePath();
   undo_.setClean();
 }
 

@@ -23,7 +23,11 @@ class SceneDocument : public QObject {
 
   // Reads a scene file (throws SceneError / std::runtime_error); clears undo.
   void open(const QString& file);
-  // Writes the scene; throws std::runtime_error naming the file.
+  // A new, unsaved scene from a template file (Save then asks where).
+  void openTemplate(const QString& file);
+  // Writes the scene; throws std::runtime_error naming the file. Saved into
+  // another folder, file references (Kawabata data, obstacle meshes) are
+  // written as absolute paths, so the scene still finds them.
   void saveAs(const QString& file);
   // An edit named `what` ("thickness 0.5 mm"): undoable; nothing happens
   // when `after` equals the scene.
@@ -38,6 +42,7 @@ class SceneDocument : public QObject {
 
   Scene scene_;
   QString file_;
+  QString origin_;  // the folder the scene's relative references are in
   QUndoStack undo_;
 };
 
