@@ -13,11 +13,13 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <QApplication>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -35,6 +37,7 @@
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/stages_panel.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -386,6 +389,44 @@ TEST_F(Widgets, TemplateSavedElsewhereStillFindsItsFiles) {
   const auto& mesh = std::get<MeshShape>(reread.obstacles[0].shape);
   EXPECT_TRUE(std::filesystem::path(mesh.file).is_absolute()) << mesh.file;
   EXPECT_TRUE(std::filesystem::exists(mesh.file));
+}
+
+// Stages: Δλ₀ and control edited, order changed, each undoable; an order
+// the scene reader refuses is refused with its message.
+TEST_F(Widgets, StagesEditAndReorderWithTheReadersRules) {
+  MainWindow window;
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
+  SceneDocument* doc = window.document();
+  StagesPanel* panel = window.stages();
+  const Scene original = doc->scene();
+  ASSERT_EQ(panel->list()->count(), 3);  // SW, R, T
+  panel->list()->setCurrentRow(1);
+  ASSERT_TRUE(panel->setIncrement(0.02));
+  EXPECT_DOUBLE_EQ(doc->scene().stages[1].initial_increment, 0.02);
+  ASSERT_TRUE(panel->setControl(1));
+  EXPECT_EQ(doc->scene().stages[1].control, StepControl::kLoad);
+  panel->list()->setCurrentRow(2);
+  ASSERT_TRUE(panel->moveSelected(-1));  // T before R: a valid order
+  EXPECT_EQ(doc->scene().stages[1].name, "T");
+  EXPECT_EQ(panel->list()->currentRow(), 1);
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene(), original);
+
+  // A last stage that releases the gripper, moved before the arc that
+  // moves it: the reader refuses that order, and so does the panel.
+  Scene released = original;
+  released.stages[2].kind = StageKind::kHold;
+  released.stages[2].moves.clear();
+  released.stages[2].release = {"end"};
+  doc->apply("release the end", released);
+  panel->list()->setCurrentRow(2);
+  EXPECT_FALSE(panel->moveSelected(-1));
+  EXPECT_NE(panel->message().toStdString().find("released"), std::string::npos)
+      << panel->message().toStdString();
+  EXPECT_EQ(doc->scene(), released);
 }
 
 // The automation CI uses: open, run, screenshot, quit.

@@ -34,6 +34,7 @@
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
+#include "ui/widgets/stages_panel.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -91,6 +92,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* dock = new QDockWidget("Properties", this);
   dock->setWidget(properties_);
   addDockWidget(Qt::LeftDockWidgetArea, dock);
+  stages_ = new StagesPanel(document_, this);
+  auto* stages_dock = new QDockWidget("Stages", this);
+  stages_dock->setWidget(stages_);
+  addDockWidget(Qt::LeftDockWidgetArea, stages_dock);
+  tabifyDockWidget(dock, stages_dock);
+  dock->raise();
   plot_ = new RunPlot(this);
   auto* plot_dock = new QDockWidget("Run", this);
   plot_dock->setWidget(plot_);
@@ -273,6 +280,7 @@ void MainWindow::updateControls() {
   run_->setEnabled(loaded && !running_);
   // A run works on the scene it started with: no edits meanwhile.
   properties_->setEnabled(!running_);
+  stages_->setEnabled(!running_);
   material_->setEnabled(!running_ && model_ != nullptr);
   undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
   redo_->setEnabled(!running_ && document_->undoStack()->canRedo());

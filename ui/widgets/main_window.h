@@ -29,6 +29,7 @@ namespace drape {
 
 class PropertyPanel;
 class RunPlot;
+class StagesPanel;
 class SceneDocument;
 class SolverWorker;
 class VtkViewport;
@@ -45,6 +46,7 @@ class MainWindow : public QMainWindow {
   SceneDocument* document() const { return document_; }
   PropertyPanel* properties() const { return properties_; }
   RunPlot* plot() const { return plot_; }
+  StagesPanel* stages() const { return stages_; }
   // A new unsaved scene from a template (resources/scenes/*.json).
   bool newFromTemplate(const QString& file);
   // Saves the scene (to `file`, or where it came from); false with a message.
@@ -106,6 +108,7 @@ class MainWindow : public QMainWindow {
   SceneDocument* document_ = nullptr;
   PropertyPanel* properties_ = nullptr;
   RunPlot* plot_ = nullptr;
+  StagesPanel* stages_ = nullptr;
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
   QTimer* player_ = nullptr;

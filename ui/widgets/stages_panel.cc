@@ -1,0 +1,158 @@
+#include "ui/widgets/stages_panel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <nlohmann/json.hpp>
+
+#include "core/io/scene_reader.h"
+#include "core/io/scene_writer.h"
+#include "core/model/scene_error.h"
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+namespace {
+
+const char* KindName(StageKind kind) {
+  switch (kind) {
+    case StageKind::kGravity:
+      return "gravity";
+    case StageKind::kLoad:
+      return "load";
+    case StageKind::kMove:
+      return "move";
+    case StageKind::kHold:
+      return "hold";
+  }
+  return "?";
+}
+
+}  // namespace
+
+StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), document_(document) {
+  auto* layout = new QVBoxLayout(this);
+  list_ = new QListWidget(this);
+  layout->addWidget(list_, 1);
+  auto* buttons = new QHBoxLayout;
+  auto* up = new QPushButton("Up", this);
+  auto* down = new QPushButton("Down", this);
+  auto* remove = new QPushButton("Remove", this);
+  buttons->addWidget(up);
+  buttons->addWidget(down);
+  buttons->addWidget(remove);
+  layout->addLayout(buttons);
+  auto* form = new QFormLayout;
+  increment_ = new QDoubleSpinBox(this);
+  increment_->setDecimals(8);
+  increment_->setRange(1e-8, 1.0);
+  increment_->setSingleStep(0.001);
+  control_ = new QComboBox(this);
+  control_->addItems({"arc length (passes limit points)", "load (plain Newton)"});
+  form->addRow("initial increment Δλ₀", increment_);
+  form->addRow("control", control_);
+  layout->addLayout(form);
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setStyleSheet("color: #b00020");
+  layout->addWidget(message_);
+  connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
+  connect(down, &QPushButton::clicked, this, [this] { moveSelected(1); });
+  connect(remove, &QPushButton::clicked, this, &StagesPanel::removeSelected);
+  connect(increment_, &QDoubleSpinBox::editingFinished, this, [this] {
+    setIncrement(increment_->value());
+  });
+  connect(control_, &QComboBox::activated, this, &StagesPanel::setControl);
+  connect(list_, &QListWidget::currentRowChanged, this, &StagesPanel::refresh);
+  connect(document_, &SceneDocument::changed, this, &StagesPanel::refresh);
+  refresh();
+}
+
+QString StagesPanel::message() const {
+  return message_->text();
+}
+
+bool StagesPanel::Apply(const QString& what, const Scene& after) {
+  // The scene reader's rules, and its messages, decide what is a valid scene.
+  try {
+    SceneFromJson(nlohmann::json::parse(SceneToJson(after).dump()));
+  } catch (const SceneError& e) {
+    message_->setText(QString::fromStdString(e.what()));
+    return false;
+  }
+  message_->clear();
+  document_->apply(what, after);
+  return true;
+}
+
+bool StagesPanel::moveSelected(int by) {
+  const int i = list_->currentRow(), j = i + by;
+  Scene after = document_->scene();
+  if (i < 0 || j < 0 || j >= static_cast<int>(after.stages.size())) return false;
+  std::swap(after.stages[i], after.stages[j]);
+  if (!Apply(QString("move stage %1").arg(QString::fromStdString(after.stages[j].name)), after))
+    return false;
+  list_->setCurrentRow(j);
+  return true;
+}
+
+bool StagesPanel::removeSelected() {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  if (i < 0 || i >= static_cast<int>(after.stages.size())) return false;
+  const QString name = QString::fromStdString(after.stages[i].name);
+  after.stages.erase(after.stages.begin() + i);
+  return Apply("remove stage " + name, after);
+}
+
+bool StagesPanel::setIncrement(double value) {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  if (refreshing_ || i < 0 || i >= static_cast<int>(after.stages.size())) return false;
+  after.stages[i].initial_increment = value;
+  return Apply(
+      QString("Δλ₀ of %1: %2").arg(QString::fromStdString(after.stages[i].name)).arg(value), after);
+}
+
+bool StagesPanel::setControl(int index) {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  if (refreshing_ || i < 0 || i >= static_cast<int>(after.stages.size())) return false;
+  after.stages[i].control = index == 0 ? StepControl::kArcLength : StepControl::kLoad;
+  return Apply(QString("control of %1").arg(QString::fromStdString(after.stages[i].name)), after);
+}
+
+void StagesPanel::refresh() {
+  refreshing_ = true;
+  const Scene& s = document_->scene();
+  const int row = std::max(0, list_->currentRow());
+  if (list_->count() != static_cast<int>(s.stages.size())) list_->clear();
+  for (size_t k = 0; k < s.stages.size(); ++k) {
+    const Stage& st = s.stages[k];
+    QString text = QString("%1. %2 (%3")
+                       .arg(k + 1)
+                       .arg(QString::fromStdString(st.name))
+                       .arg(KindName(st.kind));
+    if (!st.moves.empty()) text += QString(", %1 moves").arg(st.moves.size());
+    if (!st.release.empty()) text += ", releases";
+    text += ")";
+    if (static_cast<int>(k) < list_->count())
+      list_->item(static_cast<int>(k))->setText(text);
+    else
+      list_->addItem(text);
+  }
+  if (!s.stages.empty()) {
+    const int i = std::min(row, static_cast<int>(s.stages.size()) - 1);
+    if (list_->currentRow() != i) list_->setCurrentRow(i);
+    increment_->setValue(s.stages[i].initial_increment);
+    control_->setCurrentIndex(s.stages[i].control == StepControl::kArcLength ? 0 : 1);
+  }
+  refreshing_ = false;
+}
+
+}  // namespace drape
