@@ -119,6 +119,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   double last_correction = INFINITY;
 
   for (int it = 0;; ++it) {
+    if (cancel) cancel->WaitWhilePaused();  // a pause holds the run here
     if (cancel && cancel->IsCancelled()) {
       out.status = NewtonOutcome::Status::kCancelled;
       out.reason = "cancelled";

@@ -14,6 +14,7 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
   double r0 = 0;
   double last_correction = INFINITY;
   for (int it = 0;; ++it) {
+    if (cancel) cancel->WaitWhilePaused();  // a pause holds the run here
     if (cancel && cancel->IsCancelled()) {
       out.status = NewtonOutcome::Status::kCancelled;
       out.reason = "cancelled";

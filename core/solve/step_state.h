@@ -6,7 +6,10 @@
 #include <Eigen/Core>
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -55,14 +58,44 @@ enum class StepDecision { kContinue, kStop };
 using StepObserver = std::function<StepDecision(const StepState&)>;
 
 // Set from another thread (or a signal handler) to stop a run between Newton
-// iterations; the run keeps every step converged so far.
+// iterations; the run keeps every step converged so far. A run can also be
+// paused between Newton iterations (from another thread, not a signal
+// handler): the solver then waits in WaitWhilePaused until resumed or
+// cancelled.
 class CancellationToken {
  public:
+  // Only an atomic store, so a signal handler may call it; a paused solver
+  // sees it within WaitWhilePaused's polling interval.
   void Cancel() { cancelled_.store(true, std::memory_order_relaxed); }
   bool IsCancelled() const { return cancelled_.load(std::memory_order_relaxed); }
 
+  void Pause() {
+    std::lock_guard lock(mutex_);
+    paused_ = true;
+  }
+  void Resume() {
+    {
+      std::lock_guard lock(mutex_);
+      paused_ = false;
+    }
+    wake_.notify_all();
+  }
+  bool IsPaused() const {
+    std::lock_guard lock(mutex_);
+    return paused_;
+  }
+  // The solver's side: blocks while paused (returns at once otherwise),
+  // until resumed or cancelled.
+  void WaitWhilePaused() const {
+    std::unique_lock lock(mutex_);
+    while (paused_ && !IsCancelled()) wake_.wait_for(lock, std::chrono::milliseconds(20));
+  }
+
  private:
   std::atomic<bool> cancelled_{false};
+  mutable std::mutex mutex_;
+  mutable std::condition_variable wake_;
+  bool paused_ = false;
 };
 
 }  // namespace drape

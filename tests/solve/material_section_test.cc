@@ -61,7 +61,7 @@ TEST(MaterialSection, SofteningLawIsWarnedOfWithItsCurvatures) {
 
 TEST(MaterialSection, LawWithoutInitialStiffnessIsAnErrorAtItsKey) {
   Material m = Isotropic(LinearBending{});
-  m.bending.weft = CurveBending{{{50.0, 0.0}, {100.0, 1e-4}}, ""};
+  m.bending.weft = CurveBending{.points = {{50.0, 0.0}, {100.0, 1e-4}}};
   try {
     MakeMaterialSection(m);
     ADD_FAILURE() << "accepted";
@@ -92,7 +92,7 @@ TEST(MaterialSection, OrthotropicMembraneIsTheInverseOfItsCompliance) {
 
 TEST(MaterialSection, ValidRangeIsTheSmallestOfTheLaws) {
   Material m = Isotropic(PolynomialBending{{1e-4}, 250.0});
-  m.bending.weft = CurveBending{{{100.0, 1e-2}, {180.0, 1.5e-2}}, ""};
+  m.bending.weft = CurveBending{.points = {{100.0, 1e-2}, {180.0, 1.5e-2}}};
   const MaterialSection s = MakeMaterialSection(m);
   EXPECT_EQ(s.bending_valid_to, 180.0);
 }

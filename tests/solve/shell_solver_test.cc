@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -199,7 +203,7 @@ TEST(ShellSolver, BendingLawWithoutInitialStiffnessIsRejectedByKey) {
   rod.obstacles.clear();
   EXPECT_NO_THROW(ShellSolver(rod, SolverOptions()));
   // M = 0 up to K = 50 1/m: a flat sheet would have no bending stiffness.
-  rod.material.bending.warp = CurveBending{{{50.0, 0.0}, {100.0, 1e-4}}, ""};
+  rod.material.bending.warp = CurveBending{.points = {{50.0, 0.0}, {100.0, 1e-4}}};
   try {
     ShellSolver solver(rod, SolverOptions());
     ADD_FAILURE() << "a law with dM/dK(0) = 0 accepted";
@@ -221,6 +225,35 @@ TEST(ShellSolver, CancellationKeepsTheStepsReached) {
   EXPECT_EQ(summary.termination, Termination::kCancelled);
   EXPECT_EQ(summary.steps, 3);
   EXPECT_EQ(seen, 3);
+}
+
+TEST(ShellSolver, PauseHoldsTheRunBetweenNewtonIterations) {
+  // Paused from another thread, no step converges until resumed; a pause
+  // then a cancel ends the run keeping its steps.
+  const Scene scene = BlockDrape(10);
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  CancellationToken token;
+  std::atomic<int> steps{0};
+  token.Pause();
+  std::thread run([&] {
+    solver.Solve({[&](const StepState&) {
+                   ++steps;
+                   return StepDecision::kContinue;
+                 }},
+                 &token);
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(steps.load(), 0);
+  token.Resume();
+  while (steps.load() < 2) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  token.Pause();
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const int held = steps.load();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(steps.load(), held);
+  token.Cancel();
+  run.join();
+  EXPECT_EQ(steps.load(), held);
 }
 
 TEST(ShellSolver, FailureSaysWhereAndWhy) {

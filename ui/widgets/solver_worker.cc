@@ -5,39 +5,37 @@
 
 namespace drape {
 
+// A pause holds the solver between two Newton iterations (the token is
+// checked before each): no step completes until Resume, Step or Stop.
 void SolverWorker::pause() {
   std::lock_guard lock(mutex_);
   paused_ = true;
   steps_allowed_ = 0;
+  cancel_.Pause();
 }
 
 void SolverWorker::resume() {
-  {
-    std::lock_guard lock(mutex_);
-    paused_ = false;
-  }
-  wake_.notify_all();
+  std::lock_guard lock(mutex_);
+  paused_ = false;
+  steps_allowed_ = 0;
+  cancel_.Resume();
 }
 
 void SolverWorker::step() {
-  {
-    std::lock_guard lock(mutex_);
-    ++steps_allowed_;
-  }
-  wake_.notify_all();
+  std::lock_guard lock(mutex_);
+  if (!paused_) return;
+  ++steps_allowed_;
+  cancel_.Resume();  // until the allowed step has converged (Observe)
 }
 
 void SolverWorker::stop() {
-  cancel_.Cancel();
-  resume();
+  cancel_.Cancel();  // also ends a pause
 }
 
 StepDecision SolverWorker::Observe(const StepState& step) {
   emit stepConverged(std::make_shared<const StepState>(step));
-  // Paused: hold the solver between steps until resumed, stepped or stopped.
-  std::unique_lock lock(mutex_);
-  wake_.wait(lock, [&] { return !paused_ || steps_allowed_ > 0 || cancel_.IsCancelled(); });
-  if (paused_ && steps_allowed_ > 0) --steps_allowed_;
+  std::lock_guard lock(mutex_);
+  if (paused_ && steps_allowed_ > 0 && --steps_allowed_ == 0) cancel_.Pause();
   return StepDecision::kContinue;
 }
 

@@ -6,7 +6,6 @@
 #include <QObject>
 
 #include <atomic>
-#include <condition_variable>
 #include <memory>
 #include <mutex>
 
@@ -20,11 +19,12 @@ namespace drape {
 class SolverWorker : public QObject {
   Q_OBJECT
  public:
-  // Thread-safe controls, called from the GUI thread.
+  // Thread-safe controls, called from the GUI thread; each takes effect
+  // before the solver's next Newton iteration.
   void pause();
   void resume();
   void step();  // while paused: let one more step through
-  void stop();  // within one Newton iteration; steps so far are kept
+  void stop();  // steps so far are kept
 
  public slots:
   // Runs the whole scene; emits stepConverged per step, then finished.
@@ -38,9 +38,8 @@ class SolverWorker : public QObject {
  private:
   StepDecision Observe(const StepState& step);
 
-  CancellationToken cancel_;
+  CancellationToken cancel_;  // stops and pauses the solver
   std::mutex mutex_;
-  std::condition_variable wake_;
   bool paused_ = false;
   int steps_allowed_ = 0;  // while paused
 };
