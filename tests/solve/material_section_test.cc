@@ -13,6 +13,13 @@
 namespace drape {
 namespace {
 
+// A curve law of points [K, M] (SI).
+CurveBending CurveOf(std::vector<Vec2> points) {
+  CurveBending c;
+  c.points = std::move(points);
+  return c;
+}
+
 constexpr double kH = 5e-4;  // m
 
 Material Isotropic(BendingLaw law) {
@@ -61,7 +68,7 @@ TEST(MaterialSection, SofteningLawIsWarnedOfWithItsCurvatures) {
 
 TEST(MaterialSection, LawWithoutInitialStiffnessIsAnErrorAtItsKey) {
   Material m = Isotropic(LinearBending{});
-  m.bending.weft = CurveBending{.points = {{50.0, 0.0}, {100.0, 1e-4}}};
+  m.bending.weft = CurveOf({{50.0, 0.0}, {100.0, 1e-4}});
   try {
     MakeMaterialSection(m);
     ADD_FAILURE() << "accepted";
@@ -92,7 +99,7 @@ TEST(MaterialSection, OrthotropicMembraneIsTheInverseOfItsCompliance) {
 
 TEST(MaterialSection, ValidRangeIsTheSmallestOfTheLaws) {
   Material m = Isotropic(PolynomialBending{{1e-4}, 250.0});
-  m.bending.weft = CurveBending{.points = {{100.0, 1e-2}, {180.0, 1.5e-2}}};
+  m.bending.weft = CurveOf({{100.0, 1e-2}, {180.0, 1.5e-2}});
   const MaterialSection s = MakeMaterialSection(m);
   EXPECT_EQ(s.bending_valid_to, 180.0);
 }

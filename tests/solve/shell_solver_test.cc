@@ -22,6 +22,13 @@
 namespace drape {
 namespace {
 
+// A curve law of points [K, M] (SI).
+CurveBending CurveOf(std::vector<Vec2> points) {
+  CurveBending c;
+  c.points = std::move(points);
+  return c;
+}
+
 Scene BlockDrape(int n) {
   Scene scene = ReadScene(test::ScenesDir() / "block-drape.json");
   scene.fabric.mesh.elements = std::array<int, 2>{n, n};
@@ -203,7 +210,7 @@ TEST(ShellSolver, BendingLawWithoutInitialStiffnessIsRejectedByKey) {
   rod.obstacles.clear();
   EXPECT_NO_THROW(ShellSolver(rod, SolverOptions()));
   // M = 0 up to K = 50 1/m: a flat sheet would have no bending stiffness.
-  rod.material.bending.warp = CurveBending{.points = {{50.0, 0.0}, {100.0, 1e-4}}};
+  rod.material.bending.warp = CurveOf({{50.0, 0.0}, {100.0, 1e-4}});
   try {
     ShellSolver solver(rod, SolverOptions());
     ADD_FAILURE() << "a law with dM/dK(0) = 0 accepted";
