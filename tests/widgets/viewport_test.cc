@@ -23,6 +23,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTest>
 #include <QUndoStack>
 
@@ -382,6 +383,11 @@ TEST_F(Widgets, TemplateSavedElsewhereStillFindsItsFiles) {
   ASSERT_TRUE(window.newFromTemplate(
       QString::fromStdString((test::ScenesDir() / "dress-form-drape.json").string())));
   EXPECT_TRUE(window.document()->file().isEmpty());
+  // Contact pressure has no values before a run: a message, no crash.
+  EXPECT_TRUE(window.setField("pressure"));
+  EXPECT_NE(window.statusBar()->currentMessage().toStdString().find("contact pressure"),
+            std::string::npos)
+      << window.statusBar()->currentMessage().toStdString();
   const std::string file =
       (std::filesystem::temp_directory_path() / ("scarf-" + std::to_string(getpid()) + ".json"))
           .string();

@@ -394,15 +394,7 @@ bool MainWindow::setField(const QString& name) {
   }
   if (!model_) return true;
   rebuildRenderer();
-  try {
-    showStep(currentStep());
-  } catch (const std::exception& e) {  // contact pressure off the last step
-    statusBar()->showMessage(QString::fromStdString(e.what()));
-    view_.field.reset();
-    rebuildRenderer();
-    showStep(currentStep());
-    return false;
-  }
+  showStep(currentStep());
   return true;
 }
 
@@ -516,7 +508,14 @@ void MainWindow::showStep(int index) {
                              .arg(QString::fromStdString(s.stage_name))
                              .arg(s.lambda, 0, 'f', 4));
   }
-  renderer_->Update(frame);
+  try {
+    renderer_->Update(frame);
+  } catch (const std::invalid_argument& e) {
+    // A field this state has no values of (contact pressure of the
+    // reference state): say so and keep the picture.
+    statusBar()->showMessage(QString::fromStdString(e.what()));
+    return;
+  }
   viewport_->requestRender();
 }
 
