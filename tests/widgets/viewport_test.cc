@@ -39,6 +39,7 @@
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
+#include "ui/widgets/supports_panel.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -436,6 +437,31 @@ TEST_F(Widgets, StagesEditAndReorderWithTheReadersRules) {
   EXPECT_NE(panel->message().toStdString().find("released"), std::string::npos)
       << panel->message().toStdString();
   EXPECT_EQ(doc->scene(), released);
+}
+
+// Supports by selection rules: added, changed, removed as undoable edits;
+// a rule that holds no node is refused with the engine's message.
+TEST_F(Widgets, SupportsAreEditedByRulesAndCheckedOnTheMesh) {
+  MainWindow window;
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
+  SceneDocument* doc = window.document();
+  SupportsPanel* panel = window.supports();
+  const size_t before = doc->scene().supports.size();
+  ASSERT_TRUE(panel->addSupport("top", 1)) << panel->message().toStdString();
+  ASSERT_EQ(doc->scene().supports.size(), before + 1);
+  EXPECT_EQ(doc->scene().supports.back().fix, Fixity::kClamp);
+  EXPECT_TRUE(std::holds_alternative<EdgeSelection>(doc->scene().supports.back().select.shape));
+  ASSERT_TRUE(panel->setFixity(0));
+  EXPECT_EQ(doc->scene().supports.back().fix, Fixity::kPosition);
+  // A point 1 m off a 20 cm strip: no node is there.
+  EXPECT_FALSE(panel->addSupport("point", 0, 1.0, 1.0));
+  EXPECT_FALSE(panel->message().isEmpty());
+  EXPECT_EQ(doc->scene().supports.size(), before + 1);
+  ASSERT_TRUE(panel->removeSelected());
+  EXPECT_EQ(doc->scene().supports.size(), before);
+  doc->undoStack()->undo();  // the removal
+  EXPECT_EQ(doc->scene().supports.size(), before + 1);
 }
 
 // The automation CI uses: open, run, screenshot, quit.

@@ -35,6 +35,7 @@
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
 #include "ui/widgets/stages_panel.h"
+#include "ui/widgets/supports_panel.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -97,6 +98,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   stages_dock->setWidget(stages_);
   addDockWidget(Qt::LeftDockWidgetArea, stages_dock);
   tabifyDockWidget(dock, stages_dock);
+  supports_ = new SupportsPanel(document_, this);
+  auto* supports_dock = new QDockWidget("Supports", this);
+  supports_dock->setWidget(supports_);
+  addDockWidget(Qt::LeftDockWidgetArea, supports_dock);
+  tabifyDockWidget(dock, supports_dock);
   dock->raise();
   plot_ = new RunPlot(this);
   auto* plot_dock = new QDockWidget("Run", this);
@@ -281,6 +287,7 @@ void MainWindow::updateControls() {
   // A run works on the scene it started with: no edits meanwhile.
   properties_->setEnabled(!running_);
   stages_->setEnabled(!running_);
+  supports_->setEnabled(!running_);
   material_->setEnabled(!running_ && model_ != nullptr);
   undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
   redo_->setEnabled(!running_ && document_->undoStack()->canRedo());

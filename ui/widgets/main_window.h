@@ -30,6 +30,7 @@ namespace drape {
 class PropertyPanel;
 class RunPlot;
 class StagesPanel;
+class SupportsPanel;
 class SceneDocument;
 class SolverWorker;
 class VtkViewport;
@@ -47,6 +48,7 @@ class MainWindow : public QMainWindow {
   PropertyPanel* properties() const { return properties_; }
   RunPlot* plot() const { return plot_; }
   StagesPanel* stages() const { return stages_; }
+  SupportsPanel* supports() const { return supports_; }
   // A new unsaved scene from a template (resources/scenes/*.json).
   bool newFromTemplate(const QString& file);
   // Saves the scene (to `file`, or where it came from); false with a message.
@@ -109,6 +111,7 @@ class MainWindow : public QMainWindow {
   PropertyPanel* properties_ = nullptr;
   RunPlot* plot_ = nullptr;
   StagesPanel* stages_ = nullptr;
+  SupportsPanel* supports_ = nullptr;
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
   QTimer* player_ = nullptr;

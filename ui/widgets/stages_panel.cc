@@ -131,6 +131,7 @@ void StagesPanel::refresh() {
   refreshing_ = true;
   const Scene& s = document_->scene();
   const int row = std::max(0, list_->currentRow());
+  const QSignalBlocker block(list_);  // rebuilding the list is not a selection
   if (list_->count() != static_cast<int>(s.stages.size())) list_->clear();
   for (size_t k = 0; k < s.stages.size(); ++k) {
     const Stage& st = s.stages[k];
