@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRendererCollection.h>
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -224,6 +225,11 @@ TEST_F(Widgets, RunPausesStepsStopsScrubsAndExports) {
 
   window.showStep(2);
   EXPECT_EQ(window.currentStep(), 2);
+  // One renderer in the view, however often the view was rebuilt (a field
+  // chosen rebuilds it).
+  ASSERT_TRUE(window.setField("curvature"));
+  ASSERT_TRUE(window.setField(""));
+  EXPECT_EQ(window.viewport()->renderWindow()->GetRenderers()->GetNumberOfItems(), 1);
   const std::string dir =
       (std::filesystem::temp_directory_path() / ("drape-gui-" + std::to_string(getpid()))).string();
   std::filesystem::create_directories(dir);

@@ -159,6 +159,10 @@ struct FrameRenderer::Impl {
     PlaceCamera();
   }
 
+  // A window that outlives us (the viewport's) must not keep drawing our
+  // actors: a new FrameRenderer takes their place.
+  ~Impl() { window->RemoveRenderer(renderer); }
+
   bool HasPlane() const {
     for (const auto& o : scene.obstacles)
       if (std::holds_alternative<PlaneShape>(o.shape)) return true;
