@@ -34,54 +34,18 @@
 #include "support/test_paths.h"
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/holds_panel.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/material_dialog.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
-#include "ui/widgets/supports_panel.h"
 #include "ui/widgets/vtk_viewport.h"
+#include "widgets/gui_test.h"
 
 namespace drape {
 namespace {
-
-// The fabric's face colour (0.93, 0.62, 0.33) or its back (0.47, 0.36,
-// 0.62), shaded: saturated orange or violet.
-bool IsFabric(QRgb p) {
-  const QColor c(p);
-  const int h = c.hsvHue(), s = c.hsvSaturation();
-  return s > 80 && ((h >= 18 && h <= 40) || (h >= 250 && h <= 290));
-}
-
-int CountFabric(const QImage& image) {
-  int n = 0;
-  for (int y = 0; y < image.height(); ++y)
-    for (int x = 0; x < image.width(); ++x) n += IsFabric(image.pixel(x, y));
-  return n;
-}
-
-class Widgets : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    if (!DisplayProblem().empty()) return;
-    QSurfaceFormat::setDefaultFormat(VtkViewport::defaultFormat());
-    static int argc = 1;
-    static char name[] = "widgets_tests";
-    static char* argv[] = {name, nullptr};
-    // Never destroyed: at exit Qt Charts' statics go before a static
-    // QApplication would, and its destructor then crashed the process.
-    static QApplication* app = new QApplication(argc, argv);
-    (void)app;
-    // Settings and autosaves of the tests stay out of the user's own.
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication::setOrganizationName("Drape Studio tests");
-    QApplication::setApplicationName("widgets_tests");
-  }
-  void SetUp() override {
-    if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
-  }
-};
 
 TEST_F(Widgets, ViewportShowsTheFabricNotBlack) {
   test::StripSpec spec;
@@ -452,16 +416,16 @@ TEST_F(Widgets, SupportsAreEditedByRulesAndCheckedOnTheMesh) {
   ASSERT_TRUE(
       window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
   SceneDocument* doc = window.document();
-  SupportsPanel* panel = window.supports();
+  HoldsPanel* panel = window.supports();
   const size_t before = doc->scene().supports.size();
-  ASSERT_TRUE(panel->addSupport("top", 1)) << panel->message().toStdString();
+  ASSERT_TRUE(panel->add("top", 1)) << panel->message().toStdString();
   ASSERT_EQ(doc->scene().supports.size(), before + 1);
   EXPECT_EQ(doc->scene().supports.back().fix, Fixity::kClamp);
   EXPECT_TRUE(std::holds_alternative<EdgeSelection>(doc->scene().supports.back().select.shape));
   ASSERT_TRUE(panel->setFixity(0));
   EXPECT_EQ(doc->scene().supports.back().fix, Fixity::kPosition);
   // A point 1 m off a 20 cm strip: no node is there.
-  EXPECT_FALSE(panel->addSupport("point", 0, 1.0, 1.0));
+  EXPECT_FALSE(panel->add("point", 0, 1.0, 1.0));
   EXPECT_FALSE(panel->message().isEmpty());
   EXPECT_EQ(doc->scene().supports.size(), before + 1);
   ASSERT_TRUE(panel->removeSelected());

@@ -19,7 +19,7 @@
 
 #include "core/model/overloaded.h"
 #include "core/model/vec3_eigen.h"
-#include "core/solve/prescribed_motion.h"
+#include "core/solve/path_handles.h"
 
 namespace drape {
 namespace {
@@ -156,28 +156,9 @@ vtkSmartPointer<vtkPolyData> ObstacleSurface(const Obstacle& obstacle,
 
 std::vector<std::vector<Eigen::Vector3d>> GripperPaths(const Scene& scene,
                                                        const ShellModel& model) {
-  std::vector<Eigen::Vector3d> at(model.grippers.size(), Eigen::Vector3d::Zero());
-  for (size_t g = 0; g < model.grippers.size(); ++g) {
-    for (int node : model.grippers[g].nodes)
-      at[g] += model.reference.positions.row(node).transpose();
-    if (!model.grippers[g].nodes.empty())
-      at[g] /= static_cast<double>(model.grippers[g].nodes.size());
-  }
   std::vector<std::vector<Eigen::Vector3d>> paths;
-  constexpr int kSamples = 48;
-  for (const Stage& stage : scene.stages)
-    for (const Move& move : stage.moves) {
-      const auto it = std::find_if(model.grippers.begin(),
-                                   model.grippers.end(),
-                                   [&](const HeldNodes& h) { return h.name == move.gripper; });
-      if (move.gripper.empty() || it == model.grippers.end()) continue;
-      const size_t g = static_cast<size_t>(it - model.grippers.begin());
-      std::vector<Eigen::Vector3d> line;
-      for (int i = 0; i <= kSamples; ++i)
-        line.push_back(MotionAt(move.path, static_cast<double>(i) / kSamples).Apply(at[g]));
-      at[g] = line.back();
-      paths.push_back(std::move(line));
-    }
+  for (const GripperMove& m : GripperMoves(scene, model))
+    paths.push_back(SamplePath(scene.stages[m.stage].moves[m.move].path, m.start));
   return paths;
 }
 

@@ -27,15 +27,18 @@
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
 #include "core/model/outline_geometry.h"
+#include "core/solve/path_handles.h"
 #include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/holds_panel.h"
 #include "ui/widgets/material_dialog.h"
+#include "ui/widgets/move_editor.h"
+#include "ui/widgets/path_handles.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
 #include "ui/widgets/stages_panel.h"
-#include "ui/widgets/supports_panel.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -98,12 +101,26 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   stages_dock->setWidget(stages_);
   addDockWidget(Qt::LeftDockWidgetArea, stages_dock);
   tabifyDockWidget(dock, stages_dock);
-  supports_ = new SupportsPanel(document_, this);
+  supports_ = new HoldsPanel(HoldsPanel::Role::kSupports, document_, this);
   auto* supports_dock = new QDockWidget("Supports", this);
   supports_dock->setWidget(supports_);
   addDockWidget(Qt::LeftDockWidgetArea, supports_dock);
   tabifyDockWidget(dock, supports_dock);
+  grippers_ = new HoldsPanel(HoldsPanel::Role::kGrippers, document_, this);
+  auto* grippers_dock = new QDockWidget("Grippers", this);
+  grippers_dock->setWidget(grippers_);
+  addDockWidget(Qt::LeftDockWidgetArea, grippers_dock);
+  tabifyDockWidget(dock, grippers_dock);
   dock->raise();
+  handles_ = new PathHandles(viewport_->interactor(), this);
+  connect(handles_, &PathHandles::released, this, &MainWindow::onPathDragged);
+  connect(handles_, &PathHandles::previewed, this, [this] { viewport_->requestRender(); });
+  connect(stages_->moves(), &MoveEditor::moveSelected, this, [this](int stage, int move) {
+    handle_stage_ = stage;
+    handle_move_ = move;
+    updateHandles();
+  });
+  connect(viewport_, &VtkViewport::picked, this, &MainWindow::pickNear);
   plot_ = new RunPlot(this);
   auto* plot_dock = new QDockWidget("Run", this);
   plot_dock->setWidget(plot_);
@@ -211,6 +228,7 @@ MainWindow::~MainWindow() {
   // The renderer's actors live in the viewport's window: release them while
   // the GL context exists.
   viewport_->makeCurrent();
+  handles_->clear();
   renderer_.reset();
   viewport_->doneCurrent();
 }
@@ -239,6 +257,14 @@ void MainWindow::buildActions() {
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->show();
   });
+  pick_ = edit->addAction("&Pick nodes", this, [this](bool on) {
+    viewport_->setPickMode(on);
+    statusBar()->showMessage(on ? "pick mode: click the fabric to pick or unpick a node"
+                                : QString("%1 nodes picked").arg(picked_.size()));
+  });
+  pick_->setCheckable(true);
+  pick_->setShortcut(Qt::Key_P);
+  edit->addAction("&Clear picked nodes", this, &MainWindow::clearPicked);
   QToolBar* bar = addToolBar("Run");
   open_ = bar->addAction("Open…", this, [this] {
     const QString file = QFileDialog::getOpenFileName(this, "Open scene", {}, "Scenes (*.json)");
@@ -288,6 +314,7 @@ void MainWindow::updateControls() {
   properties_->setEnabled(!running_);
   stages_->setEnabled(!running_);
   supports_->setEnabled(!running_);
+  grippers_->setEnabled(!running_);
   material_->setEnabled(!running_ && model_ != nullptr);
   undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
   redo_->setEnabled(!running_ && document_->undoStack()->canRedo());
@@ -356,9 +383,11 @@ void MainWindow::onDocumentChanged() {
     return;
   }
   viewport_->makeCurrent();
+  handles_->clear();
   renderer_.reset();
   viewport_->doneCurrent();
   scene_ = document_->scene();
+  if (!model_ || model->NodeCount() != model_->NodeCount()) clearPicked();
   model_ = std::move(model);
   steps_.clear();
   rebuildRenderer();
@@ -376,10 +405,82 @@ void MainWindow::rebuildRenderer() {
   Eigen::AlignedBox3d bounds = RunBounds(scene_, {&model_->reference});
   for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
   viewport_->makeCurrent();
+  handles_->clear();  // its widgets point at the old renderer
   renderer_.reset();  // its actors leave the window before the new ones come
   renderer_ = std::make_unique<FrameRenderer>(
       scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
   viewport_->doneCurrent();
+  updateHandles();
+  updateMarkers();
+}
+
+// The selected move's path gets handles, unless a run is going on (edits
+// wait for it) or the move carries no gripper of the model.
+void MainWindow::updateHandles() {
+  handles_->clear();
+  if (running_ || !renderer_ || handle_stage_ < 0) return viewport_->requestRender();
+  for (const GripperMove& m : GripperMoves(scene_, *model_))
+    if (m.stage == handle_stage_ && m.move == handle_move_)
+      handles_->show(renderer_->renderer(), scene_.stages[m.stage].moves[m.move].path, m.start);
+  viewport_->requestRender();
+}
+
+void MainWindow::onPathDragged(const Path& path) {
+  Scene after = document_->scene();
+  if (handle_stage_ < 0 || handle_stage_ >= static_cast<int>(after.stages.size()) ||
+      handle_move_ < 0 ||
+      handle_move_ >= static_cast<int>(after.stages[handle_stage_].moves.size()))
+    return;
+  Move& move = after.stages[handle_stage_].moves[handle_move_];
+  move.path = path;
+  // Applied once VTK has finished with the drag's events: the edit remakes
+  // the renderer the handles live in.
+  const QString what = "drag the path of " + QString::fromStdString(move.gripper);
+  QTimer::singleShot(0, this, [this, what, after] {
+    QString problem;
+    if (!document_->tryApply(what, after, &problem)) {
+      statusBar()->showMessage(problem);
+      updateHandles();
+    }
+  });
+}
+
+void MainWindow::pickNear(const Eigen::Vector3d& point) {
+  if (!model_) return;
+  const int i = currentStep();
+  const Eigen::MatrixX3d& x = i > 0 ? steps_[i - 1]->state.positions : model_->reference.positions;
+  Eigen::Index nearest = 0;
+  (x.rowwise() - point.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
+  const int node = static_cast<int>(nearest);
+  const auto it = std::find(picked_.begin(), picked_.end(), node);
+  const bool added = it == picked_.end();
+  if (added)
+    picked_.push_back(node);
+  else
+    picked_.erase(it);
+  supports_->setPickedNodes(picked_);
+  grippers_->setPickedNodes(picked_);
+  updateMarkers();
+  statusBar()->showMessage(QString("node %1 %2; %3 nodes picked")
+                               .arg(node)
+                               .arg(added ? "picked" : "unpicked")
+                               .arg(picked_.size()));
+}
+
+void MainWindow::clearPicked() {
+  picked_.clear();
+  supports_->setPickedNodes(picked_);
+  grippers_->setPickedNodes(picked_);
+  updateMarkers();
+}
+
+void MainWindow::updateMarkers() {
+  if (!renderer_) return;
+  const int i = currentStep();
+  const Eigen::MatrixX3d& x = i > 0 ? steps_[i - 1]->state.positions : model_->reference.positions;
+  std::vector<Eigen::Vector3d> points;
+  for (int node : picked_) points.push_back(x.row(node).transpose());
+  viewport_->showMarkers(renderer_->renderer(), points);
 }
 
 int MainWindow::currentStep() const {
@@ -517,6 +618,7 @@ void MainWindow::showStep(int index) {
   }
   try {
     renderer_->Update(frame);
+    updateMarkers();
   } catch (const std::invalid_argument& e) {
     // A field this state has no values of (contact pressure of the
     // reference state): say so and keep the picture.

@@ -27,10 +27,11 @@ class QTimer;
 
 namespace drape {
 
+class HoldsPanel;
+class PathHandles;
 class PropertyPanel;
 class RunPlot;
 class StagesPanel;
-class SupportsPanel;
 class SceneDocument;
 class SolverWorker;
 class VtkViewport;
@@ -48,7 +49,11 @@ class MainWindow : public QMainWindow {
   PropertyPanel* properties() const { return properties_; }
   RunPlot* plot() const { return plot_; }
   StagesPanel* stages() const { return stages_; }
-  SupportsPanel* supports() const { return supports_; }
+  HoldsPanel* supports() const { return supports_; }
+  HoldsPanel* grippers() const { return grippers_; }
+  PathHandles* pathHandles() const { return handles_; }
+  // Nodes picked in the viewport (pick mode), in the order picked.
+  const std::vector<int>& pickedNodes() const { return picked_; }
   // A new unsaved scene from a template (resources/scenes/*.json).
   bool newFromTemplate(const QString& file);
   // Saves the scene (to `file`, or where it came from); false with a message.
@@ -84,6 +89,10 @@ class MainWindow : public QMainWindow {
   void stop();
   void showStep(int index);  // 0: the reference state
   void play();               // through the timeline from the shown step
+  // The node nearest `point` in the shown state is picked, or unpicked
+  // when it was.
+  void pickNear(const Eigen::Vector3d& point);
+  void clearPicked();
 
  signals:
   void runFinished(const drape::SolveSummary& summary);
@@ -101,6 +110,9 @@ class MainWindow : public QMainWindow {
   void onDocumentChanged();
   void rebuildRenderer();
   void updateControls();
+  void updateHandles();
+  void updateMarkers();
+  void onPathDragged(const Path& path);
 
   Scene scene_;
   std::unique_ptr<ShellModel> model_;
@@ -111,7 +123,10 @@ class MainWindow : public QMainWindow {
   PropertyPanel* properties_ = nullptr;
   RunPlot* plot_ = nullptr;
   StagesPanel* stages_ = nullptr;
-  SupportsPanel* supports_ = nullptr;
+  HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;
+  PathHandles* handles_ = nullptr;
+  int handle_stage_ = -1, handle_move_ = -1;  // the move whose path has handles
+  std::vector<int> picked_;
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
   QTimer* player_ = nullptr;
@@ -119,7 +134,7 @@ class MainWindow : public QMainWindow {
   QMenu* recent_menu_ = nullptr;
   RenderOptions view_;
   QLabel* step_label_ = nullptr;
-  QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr;
+  QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr, *pick_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
   QThread* thread_ = nullptr;
   SolverWorker* worker_ = nullptr;

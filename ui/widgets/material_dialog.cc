@@ -35,12 +35,6 @@ namespace {
 constexpr double kPerCm = 100.0;           // 1/m per 1/cm
 constexpr double kGfCmPerCm = 9.80665e-3;  // N·m/m per gf·cm/cm
 
-std::filesystem::path SceneDirectory(const SceneDocument* document) {
-  return document->file().isEmpty()
-             ? std::filesystem::current_path()
-             : std::filesystem::path(document->file().toStdString()).parent_path();
-}
-
 }  // namespace
 
 MaterialDialog::MaterialDialog(SceneDocument* document, QWidget* parent)
@@ -50,7 +44,7 @@ MaterialDialog::MaterialDialog(SceneDocument* document, QWidget* parent)
 
   auto* library_row = new QHBoxLayout;
   library_ = new QComboBox(this);
-  for (const auto& name : LibraryMaterialNames(MaterialLibraryDirs(SceneDirectory(document))))
+  for (const auto& name : LibraryMaterialNames(MaterialLibraryDirs(document->directory())))
     library_->addItem(QString::fromStdString(name));
   auto* use_library = new QPushButton("Use library material", this);
   library_row->addWidget(new QLabel("Library:", this));
@@ -215,7 +209,7 @@ bool MaterialDialog::applyLibrary() {
     doc["material"] = {{"library", library_->currentText().toStdString()}};
     Scene after = document_->scene();
     after.material =
-        SceneFromJson(nlohmann::json::parse(doc.dump()), SceneDirectory(document_)).material;
+        SceneFromJson(nlohmann::json::parse(doc.dump()), document_->directory()).material;
     document_->apply("material " + library_->currentText(), after);
     return true;
   } catch (const std::exception& e) {

@@ -5,8 +5,11 @@
 
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
+#include "core/solve/shell_model.h"
 
 namespace drape {
 
@@ -69,6 +72,32 @@ void SceneDocument::saveAs(const QString& file) {
 void SceneDocument::apply(const QString& what, const Scene& after) {
   if (after == scene_) return;
   undo_.push(new SceneEdit(this, what, scene_, after));
+}
+
+std::filesystem::path SceneDocument::directory() const {
+  return origin_.isEmpty() ? std::filesystem::current_path()
+                           : std::filesystem::path(origin_.toStdString());
+}
+
+Scene SceneDocument::parse(const nlohmann::json& document) const {
+  return SceneFromJson(document, directory());
+}
+
+QString SceneDocument::check(const Scene& after) const {
+  try {
+    BuildShellModel(parse(nlohmann::json::parse(SceneToJson(after).dump())));
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+bool SceneDocument::tryApply(const QString& what, const Scene& after, QString* problem) {
+  const QString wrong = check(after);
+  if (problem) *problem = wrong;
+  if (!wrong.isEmpty()) return false;
+  apply(what, after);
+  return true;
 }
 
 void SceneDocument::set(const Scene& scene) {

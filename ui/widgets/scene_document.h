@@ -7,6 +7,10 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <filesystem>
+
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/model/scene.h"
 
 namespace drape {
@@ -32,6 +36,17 @@ class SceneDocument : public QObject {
   // An edit named `what` ("thickness 0.5 mm"): undoable; nothing happens
   // when `after` equals the scene.
   void apply(const QString& what, const Scene& after);
+
+  // The folder the scene's relative file references are resolved in.
+  std::filesystem::path directory() const;
+  // A scene's JSON form read by the scene reader's rules, references
+  // resolved in directory(). Throws SceneError with the reader's message.
+  Scene parse(const nlohmann::json& document) const;
+  // What is wrong with `after` by the reader's rules and the engine's (it
+  // must mesh and every selection must match nodes), or "".
+  QString check(const Scene& after) const;
+  // check(), then apply(); false with the reason in `problem`.
+  bool tryApply(const QString& what, const Scene& after, QString* problem = nullptr);
 
  signals:
   void changed();  // after open, an edit, undo or redo

@@ -5,34 +5,17 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
 #include <QVBoxLayout>
-#include <nlohmann/json.hpp>
 
-#include "core/io/scene_reader.h"
-#include "core/io/scene_writer.h"
-#include "core/model/scene_error.h"
+#include <algorithm>
+#include "core/model/scene.h"
+#include "ui/widgets/move_editor.h"
 #include "ui/widgets/scene_document.h"
 
 namespace drape {
-namespace {
-
-const char* KindName(StageKind kind) {
-  switch (kind) {
-    case StageKind::kGravity:
-      return "gravity";
-    case StageKind::kLoad:
-      return "load";
-    case StageKind::kMove:
-      return "move";
-    case StageKind::kHold:
-      return "hold";
-  }
-  return "?";
-}
-
-}  // namespace
 
 StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
     : QWidget(parent), document_(document) {
@@ -43,6 +26,11 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   auto* up = new QPushButton("Up", this);
   auto* down = new QPushButton("Down", this);
   auto* remove = new QPushButton("Remove", this);
+  new_kind_ = new QComboBox(this);
+  new_kind_->addItems({"gravity", "load", "move", "hold"});
+  auto* add = new QPushButton("Add stage", this);
+  buttons->addWidget(new_kind_);
+  buttons->addWidget(add);
   buttons->addWidget(up);
   buttons->addWidget(down);
   buttons->addWidget(remove);
@@ -56,7 +44,12 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   control_->addItems({"arc length (passes limit points)", "load (plain Newton)"});
   form->addRow("initial increment Δλ₀", increment_);
   form->addRow("control", control_);
+  release_ = new QLineEdit(this);
+  release_->setPlaceholderText("gripper names, comma separated");
+  form->addRow("releases", release_);
   layout->addLayout(form);
+  moves_ = new MoveEditor(document_, this);
+  layout->addWidget(moves_);
   message_ = new QLabel(this);
   message_->setWordWrap(true);
   message_->setStyleSheet("color: #b00020");
@@ -64,6 +57,10 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
   connect(down, &QPushButton::clicked, this, [this] { moveSelected(1); });
   connect(remove, &QPushButton::clicked, this, &StagesPanel::removeSelected);
+  connect(add, &QPushButton::clicked, this, [this] { addStage(new_kind_->currentText()); });
+  connect(release_, &QLineEdit::editingFinished, this, [this] {
+    if (!refreshing_) setRelease(release_->text());
+  });
   connect(increment_, &QDoubleSpinBox::editingFinished, this, [this] {
     setIncrement(increment_->value());
   });
@@ -78,16 +75,47 @@ QString StagesPanel::message() const {
 }
 
 bool StagesPanel::Apply(const QString& what, const Scene& after) {
-  // The scene reader's rules, and its messages, decide what is a valid scene.
-  try {
-    SceneFromJson(nlohmann::json::parse(SceneToJson(after).dump()));
-  } catch (const SceneError& e) {
-    message_->setText(QString::fromStdString(e.what()));
-    return false;
+  QString problem;
+  const bool done = document_->tryApply(what, after, &problem);
+  message_->setText(problem);
+  return done;
+}
+
+bool StagesPanel::addStage(const QString& kind) {
+  Scene after = document_->scene();
+  Stage stage;
+  int n = static_cast<int>(after.stages.size()) + 1;
+  auto taken = [&](const std::string& name) {
+    return std::any_of(
+        after.stages.begin(), after.stages.end(), [&](const Stage& s) { return s.name == name; });
+  };
+  while (taken("stage " + std::to_string(n))) ++n;
+  stage.name = "stage " + std::to_string(n);
+  const QStringList kinds = {"gravity", "load", "move", "hold"};
+  if (!kinds.contains(kind)) return false;
+  stage.kind = static_cast<StageKind>(kinds.indexOf(kind));
+  if (stage.kind == StageKind::kMove) {
+    if (after.grippers.empty()) {
+      message_->setText("a move stage carries a gripper: add a gripper first");
+      return false;
+    }
+    stage.moves.push_back({after.grippers.front().name, LinePath{{0, 0, 0.05}}, ""});
   }
-  message_->clear();
-  document_->apply(what, after);
+  after.stages.push_back(stage);
+  if (!Apply(QString("add %1 stage").arg(kind), after)) return false;
+  list_->setCurrentRow(list_->count() - 1);
   return true;
+}
+
+bool StagesPanel::setRelease(const QString& names) {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  if (i < 0 || i >= static_cast<int>(after.stages.size())) return false;
+  after.stages[i].release.clear();
+  for (const QString& name : names.split(',', Qt::SkipEmptyParts))
+    after.stages[i].release.push_back(name.trimmed().toStdString());
+  return Apply(QString("%1 releases %2").arg(QString::fromStdString(after.stages[i].name), names),
+               after);
 }
 
 bool StagesPanel::moveSelected(int by) {
@@ -138,7 +166,7 @@ void StagesPanel::refresh() {
     QString text = QString("%1. %2 (%3")
                        .arg(k + 1)
                        .arg(QString::fromStdString(st.name))
-                       .arg(KindName(st.kind));
+                       .arg(ToString(st.kind));
     if (!st.moves.empty()) text += QString(", %1 moves").arg(st.moves.size());
     if (!st.release.empty()) text += ", releases";
     text += ")";
@@ -152,7 +180,11 @@ void StagesPanel::refresh() {
     if (list_->currentRow() != i) list_->setCurrentRow(i);
     increment_->setValue(s.stages[i].initial_increment);
     control_->setCurrentIndex(s.stages[i].control == StepControl::kArcLength ? 0 : 1);
+    QStringList release;
+    for (const auto& name : s.stages[i].release) release << QString::fromStdString(name);
+    release_->setText(release.join(", "));
   }
+  moves_->setStage(s.stages.empty() ? -1 : list_->currentRow());
   refreshing_ = false;
 }
 

@@ -1,11 +1,20 @@
 #include "ui/widgets/vtk_viewport.h"
 
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLState.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -28,6 +37,48 @@ VtkViewport::VtkViewport(QWidget* parent) : QOpenGLWidget(parent) {
     observers_.push_back(window_->AddObserver(event, this, &VtkViewport::OnWindowEvent));
   setMouseTracking(false);
   setFocusPolicy(Qt::StrongFocus);
+  marker_points_ = vtkSmartPointer<vtkPolyData>::New();
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(marker_points_);
+  markers_ = vtkSmartPointer<vtkActor>::New();
+  markers_->SetMapper(mapper);
+  markers_->GetProperty()->SetColor(0.9, 0.1, 0.6);
+  markers_->GetProperty()->SetPointSize(9);
+  markers_->GetProperty()->SetRenderPointsAsSpheres(true);
+  markers_->PickableOff();
+}
+
+vtkRenderWindowInteractor* VtkViewport::interactor() const {
+  return interactor_;
+}
+
+std::optional<Eigen::Vector3d> VtkViewport::pickSurface(const QPointF& position) const {
+  vtkRenderer* renderer = window_->GetRenderers()->GetFirstRenderer();
+  if (!renderer) return std::nullopt;
+  const double dpr = devicePixelRatioF();
+  auto picker = vtkSmartPointer<vtkCellPicker>::New();
+  picker->SetTolerance(0.002);
+  // VTK's display y runs up.
+  if (!picker->Pick(position.x() * dpr, (height() - position.y()) * dpr - 1, 0, renderer))
+    return std::nullopt;
+  const double* p = picker->GetPickPosition();
+  return Eigen::Vector3d(p[0], p[1], p[2]);
+}
+
+void VtkViewport::showMarkers(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points) {
+  if (marker_renderer_ && marker_renderer_ != renderer) marker_renderer_->RemoveActor(markers_);
+  marker_renderer_ = renderer;
+  auto xyz = vtkSmartPointer<vtkPoints>::New();
+  auto vertices = vtkSmartPointer<vtkCellArray>::New();
+  for (const Eigen::Vector3d& p : points) {
+    const vtkIdType id = xyz->InsertNextPoint(p.x(), p.y(), p.z());
+    vertices->InsertNextCell(1, &id);
+  }
+  marker_points_->SetPoints(xyz);
+  marker_points_->SetVerts(vertices);
+  marker_points_->Modified();
+  if (renderer && !renderer->HasViewProp(markers_)) renderer->AddActor(markers_);
+  update();
 }
 
 VtkViewport::~VtkViewport() {
@@ -157,6 +208,10 @@ void VtkViewport::ForwardMouse(QMouseEvent* event, unsigned long vtk_event) {
 }
 
 void VtkViewport::mousePressEvent(QMouseEvent* event) {
+  if (pick_mode_ && event->button() == Qt::LeftButton) {
+    if (const auto p = pickSurface(event->position())) emit picked(*p);
+    return;
+  }
   switch (event->button()) {
     case Qt::LeftButton:
       ForwardMouse(event, vtkCommand::LeftButtonPressEvent);
@@ -173,6 +228,7 @@ void VtkViewport::mousePressEvent(QMouseEvent* event) {
 }
 
 void VtkViewport::mouseReleaseEvent(QMouseEvent* event) {
+  if (pick_mode_ && event->button() == Qt::LeftButton) return;
   switch (event->button()) {
     case Qt::LeftButton:
       ForwardMouse(event, vtkCommand::LeftButtonReleaseEvent);

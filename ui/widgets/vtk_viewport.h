@@ -8,14 +8,20 @@
 #pragma once
 
 #include <vtkSmartPointer.h>
+#include <Eigen/Core>
 #include <QOpenGLWidget>
 #include <QSurfaceFormat>
 
+#include <optional>
 #include <vector>
 
+class vtkActor;
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
 class vtkObject;
+class vtkPolyData;
+class vtkRenderer;
+class vtkRenderWindowInteractor;
 
 namespace drape {
 
@@ -36,6 +42,20 @@ class VtkViewport : public QOpenGLWidget {
   void requestRender();
   // Paints (VTK renders shown) since the viewport was made: for frame rates.
   long long paints() const { return paints_; }
+  // For 3-D widgets (path handles) that take mouse events before the camera.
+  vtkRenderWindowInteractor* interactor() const;
+
+  // The surface point under a widget position (logical pixels), if any.
+  std::optional<Eigen::Vector3d> pickSurface(const QPointF& position) const;
+  // In pick mode a left click picks (signal picked) instead of turning the
+  // camera.
+  void setPickMode(bool on) { pick_mode_ = on; }
+  bool pickMode() const { return pick_mode_; }
+  // Points drawn over the scene in `renderer` (picked nodes); none: hidden.
+  void showMarkers(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points);
+
+ signals:
+  void picked(const Eigen::Vector3d& point);
 
  protected:
   void initializeGL() override;
@@ -53,6 +73,10 @@ class VtkViewport : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   std::vector<unsigned long> observers_;
+  vtkSmartPointer<vtkPolyData> marker_points_;
+  vtkSmartPointer<vtkActor> markers_;
+  vtkSmartPointer<vtkRenderer> marker_renderer_;  // kept: renderers are remade on edits
+  bool pick_mode_ = false;
   bool in_paint_ = false;
   int framebuffer_retries_ = 0;
   long long paints_ = 0;  // new framebuffers asked of Qt (see paintGL)

@@ -1,0 +1,119 @@
+#include "core/solve/path_handles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/model/overloaded.h"
+#include "core/solve/prescribed_motion.h"
+#include "core/solve/shell_model.h"
+
+namespace drape {
+namespace {
+
+Eigen::Vector3d V(const Vec3& v) {
+  return {v[0], v[1], v[2]};
+}
+Vec3 A(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+void CheckHandle(int handle, size_t count) {
+  if (handle < 0 || static_cast<size_t>(handle) >= count)
+    throw std::out_of_range("the path has no handle " + std::to_string(handle));
+}
+
+// The angle [deg] about `axis` that takes `from` to `to` (both seen in the
+// plane normal to the axis), of the values θ + 360k the one nearest `near`.
+double AngleAbout(const Eigen::Vector3d& axis,
+                  const Eigen::Vector3d& from,
+                  const Eigen::Vector3d& to,
+                  double near) {
+  const Eigen::Vector3d a = axis.normalized();
+  const Eigen::Vector3d f = from - a * a.dot(from), t = to - a * a.dot(to);
+  double angle = std::atan2(a.dot(f.cross(t)), f.dot(t)) * 180.0 / M_PI;
+  angle += 360.0 * std::round((near - angle) / 360.0);
+  return angle;
+}
+
+}  // namespace
+
+std::vector<GripperMove> GripperMoves(const Scene& scene, const ShellModel& model) {
+  std::vector<Eigen::Vector3d> at(model.grippers.size(), Eigen::Vector3d::Zero());
+  for (size_t g = 0; g < model.grippers.size(); ++g) {
+    for (int node : model.grippers[g].nodes)
+      at[g] += model.reference.positions.row(node).transpose();
+    if (!model.grippers[g].nodes.empty())
+      at[g] /= static_cast<double>(model.grippers[g].nodes.size());
+  }
+  std::vector<GripperMove> moves;
+  for (size_t s = 0; s < scene.stages.size(); ++s)
+    for (size_t m = 0; m < scene.stages[s].moves.size(); ++m) {
+      const Move& move = scene.stages[s].moves[m];
+      const auto it = std::find_if(model.grippers.begin(),
+                                   model.grippers.end(),
+                                   [&](const HeldNodes& h) { return h.name == move.gripper; });
+      if (move.gripper.empty() || it == model.grippers.end()) continue;
+      const size_t g = static_cast<size_t>(it - model.grippers.begin());
+      moves.push_back({static_cast<int>(s), static_cast<int>(m), move.gripper, at[g]});
+      at[g] = MotionAt(move.path, 1.0).Apply(at[g]);
+    }
+  return moves;
+}
+
+std::vector<Eigen::Vector3d> SamplePath(const Path& path,
+                                        const Eigen::Vector3d& start,
+                                        int samples) {
+  std::vector<Eigen::Vector3d> line;
+  for (int i = 0; i <= samples; ++i)
+    line.push_back(MotionAt(path, static_cast<double>(i) / samples).Apply(start));
+  return line;
+}
+
+std::vector<Eigen::Vector3d> PathHandlePoints(const Path& path, const Eigen::Vector3d& start) {
+  return std::visit(
+      Overloaded{
+          [&](const LinePath& p) { return std::vector<Eigen::Vector3d>{start + V(p.by)}; },
+          [&](const ArcPath& p) {
+            return std::vector<Eigen::Vector3d>{V(p.center), MotionAt(p, 1.0).Apply(start)};
+          },
+          [&](const KeyframesPath& p) {
+            std::vector<Eigen::Vector3d> points;
+            for (const Vec3& k : p.points) points.push_back(start + V(k));
+            return points;
+          },
+      },
+      path);
+}
+
+Path MovePathHandle(const Path& path,
+                    const Eigen::Vector3d& start,
+                    int handle,
+                    const Eigen::Vector3d& to) {
+  return std::visit(Overloaded{
+                        [&](LinePath p) -> Path {
+                          CheckHandle(handle, 1);
+                          p.by = A(to - start);
+                          return p;
+                        },
+                        [&](ArcPath p) -> Path {
+                          CheckHandle(handle, 2);
+                          if (handle == 0) {
+                            p.center = A(to);
+                          } else {
+                            const Eigen::Vector3d c = V(p.center);
+                            p.angle_deg = AngleAbout(V(p.axis), start - c, to - c, p.angle_deg);
+                          }
+                          return p;
+                        },
+                        [&](KeyframesPath p) -> Path {
+                          CheckHandle(handle, p.points.size());
+                          p.points[static_cast<size_t>(handle)] = A(to - start);
+                          return p;
+                        },
+                    },
+                    path);
+}
+
+}  // namespace drape

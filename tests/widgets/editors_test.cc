@@ -1,0 +1,245 @@
+// The workbench's scene editors driven as a user would: a path handle
+// dragged with the mouse in the viewport, nodes picked by clicking the
+// fabric, moves and stages typed in. Each edit is checked against geometry
+// computed here, undone, redone, and survives save and reopen.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include <unistd.h>
+
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <QListWidget>
+#include <QMouseEvent>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include "core/io/scene_reader.h"
+#include "core/solve/path_handles.h"
+#include "core/solve/prescribed_motion.h"
+#include "core/solve/shell_model.h"
+#include "support/test_paths.h"
+#include "ui/widgets/holds_panel.h"
+#include "ui/widgets/main_window.h"
+#include "ui/widgets/move_editor.h"
+#include "ui/widgets/path_handles.h"
+#include "ui/widgets/scene_document.h"
+#include "ui/widgets/stages_panel.h"
+#include "widgets/gui_test.h"
+
+namespace drape {
+namespace {
+
+// Where a world point is drawn in the viewport, in widget coordinates.
+QPoint OnScreen(VtkViewport* viewport, const Eigen::Vector3d& p) {
+  vtkRenderer* r = viewport->renderWindow()->GetRenderers()->GetFirstRenderer();
+  r->SetWorldPoint(p.x(), p.y(), p.z(), 1.0);
+  r->WorldToDisplay();
+  double d[3];
+  r->GetDisplayPoint(d);
+  const double dpr = viewport->devicePixelRatioF();
+  return QPoint(qRound(d[0] / dpr), qRound(viewport->height() - (d[1] + 1) / dpr));
+}
+
+void Mouse(
+    QWidget* w, QEvent::Type type, QPoint at, Qt::MouseButton button, Qt::MouseButtons held) {
+  QMouseEvent event(type, QPointF(at), QPointF(w->mapToGlobal(at)), button, held, Qt::NoModifier);
+  QApplication::sendEvent(w, &event);
+}
+
+// Press, ten moves, release: what a hand does.
+void Drag(QWidget* w, QPoint from, QPoint to) {
+  Mouse(w, QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+  for (int k = 1; k <= 10; ++k)
+    Mouse(w, QEvent::MouseMove, from + (to - from) * k / 10, Qt::NoButton, Qt::LeftButton);
+  Mouse(w, QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+}
+
+std::string TempFile(const std::string& stem) {
+  return (std::filesystem::temp_directory_path() /
+          (stem + "-" + std::to_string(getpid()) + ".json"))
+      .string();
+}
+
+QString StripFold() {
+  return QString::fromStdString((test::ScenesDir() / "strip-fold.json").string());
+}
+
+TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  const Scene original = doc->scene();
+  // The fold stage R: its arc gets a centre and an end handle.
+  window.stages()->list()->setCurrentRow(1);
+  PathHandles* handles = window.pathHandles();
+  ASSERT_EQ(handles->count(), 2);
+  const Eigen::Vector3d start(-0.1, 0, 0);  // the left edge's centroid
+  const Eigen::Vector3d c = handles->position(0);
+  EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.02345e-2)).norm(), 1e-12);
+  EXPECT_LT(
+      (handles->position(1) - MotionAt(original.stages[1].moves[0].path, 1).Apply(start)).norm(),
+      1e-12);
+  QTest::qWait(200);  // drawn, so the camera maps world to screen
+
+  QSignalSpy previews(handles, &PathHandles::previewed);
+  const QPoint from = OnScreen(window.viewport(), handles->position(1));
+  const QPoint to = from + QPoint(-40, -90);
+  Drag(window.viewport(), from, to);
+  EXPECT_GE(previews.count(), 5);  // the path followed the hand
+  const Eigen::Vector3d dropped = handles->position(1);
+  EXPECT_GT((dropped - MotionAt(original.stages[1].moves[0].path, 1).Apply(start)).norm(), 0.005)
+      << "the drag did not move the handle";
+  QTest::qWait(50);  // the edit is applied after VTK's events
+
+  // The held edge now ends in the dropped direction, seen along the axis.
+  const auto& arc = std::get<ArcPath>(doc->scene().stages[1].moves[0].path);
+  EXPECT_NE(arc.angle_deg, 180.0);
+  EXPECT_EQ(arc.axis, (Vec3{0, 1, 0}));
+  const Eigen::Vector3d end = MotionAt(arc, 1).Apply(start);
+  auto in_plane = [&](const Eigen::Vector3d& v) {
+    return Eigen::Vector3d(v.x() - c.x(), 0, v.z() - c.z());
+  };
+  EXPECT_LT(in_plane(end).normalized().cross(in_plane(dropped).normalized()).norm(), 1e-9);
+  EXPECT_GT(in_plane(end).dot(in_plane(dropped)), 0);
+  EXPECT_NEAR(in_plane(end).norm(), in_plane(start).norm(), 1e-12);
+  // The handles were remade where the edited path puts them.
+  EXPECT_LT((handles->position(1) - end).norm(), 1e-12);
+
+  QUndoStack* undo = doc->undoStack();
+  const Scene dragged = doc->scene();
+  undo->undo();
+  EXPECT_EQ(doc->scene(), original);
+  undo->redo();
+  EXPECT_EQ(doc->scene(), dragged);
+
+  const std::string file = TempFile("dragged");
+  ASSERT_TRUE(window.saveScene(QString::fromStdString(file)));
+  const Scene reread = ReadScene(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(reread, dragged);
+}
+
+TEST_F(Widgets, MovesAreTypedWithUnitsAndReadByTheSceneReader) {
+  MainWindow window;
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  window.stages()->list()->setCurrentRow(2);  // T: a 1 cm slide
+  MoveEditor* moves = window.stages()->moves();
+  ASSERT_EQ(moves->stage(), 2);
+  ASSERT_EQ(moves->currentMove(), 0);
+  ASSERT_TRUE(moves->setPath("line", "2 cm, 0, 10 mm")) << moves->message().toStdString();
+  EXPECT_EQ(std::get<LinePath>(doc->scene().stages[2].moves[0].path).by, (Vec3{0.02, 0, 0.01}));
+  EXPECT_EQ(window.pathHandles()->count(), 1);
+
+  // Two components: the reader's message, naming the key; nothing changes.
+  const Scene before = doc->scene();
+  EXPECT_FALSE(moves->setPath("line", "2 cm, 0"));
+  EXPECT_NE(moves->message().toStdString().find("by"), std::string::npos)
+      << moves->message().toStdString();
+  EXPECT_EQ(doc->scene(), before);
+  EXPECT_FALSE(moves->setPath("arc", "0, 0, 0", "0, 1, 0", "90 kg"));
+  EXPECT_EQ(doc->scene(), before);
+
+  ASSERT_TRUE(moves->setPath("keyframes", "0, 0, 1 cm; 1 cm, 0, 1 cm; 2 cm, 0, 0", "smooth"))
+      << moves->message().toStdString();
+  const auto& keys = std::get<KeyframesPath>(doc->scene().stages[2].moves[0].path);
+  ASSERT_EQ(keys.points.size(), 3u);
+  EXPECT_EQ(keys.points[1], (Vec3{0.01, 0, 0.01}));
+  EXPECT_EQ(keys.interpolation, Interpolation::kSmooth);
+  EXPECT_EQ(window.pathHandles()->count(), 3);  // one per keyframe
+
+  // A second move in the same stage carries the table (added 5 cm up, then
+  // typed 1 cm down); removed, and the removal undone.
+  ASSERT_TRUE(moves->addMove("obstacle table")) << moves->message().toStdString();
+  ASSERT_EQ(doc->scene().stages[2].moves.size(), 2u);
+  EXPECT_EQ(doc->scene().stages[2].moves[1].obstacle, "table");
+  EXPECT_EQ(window.pathHandles()->count(), 0);  // handles are for grippers' paths
+  ASSERT_TRUE(moves->setPath("line", "0, 0, -1 cm"));
+  ASSERT_TRUE(moves->removeSelected());
+  EXPECT_EQ(doc->scene().stages[2].moves.size(), 1u);
+  doc->undoStack()->undo();
+  EXPECT_EQ(std::get<LinePath>(doc->scene().stages[2].moves[1].path).by, (Vec3{0, 0, -0.01}));
+}
+
+TEST_F(Widgets, StagesAreAddedAndReleaseGrippersByTheReadersRules) {
+  MainWindow window;
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  StagesPanel* stages = window.stages();
+  const size_t n = doc->scene().stages.size();
+  ASSERT_TRUE(stages->addStage("move")) << stages->message().toStdString();
+  ASSERT_EQ(doc->scene().stages.size(), n + 1);
+  EXPECT_EQ(doc->scene().stages.back().kind, StageKind::kMove);
+  EXPECT_EQ(doc->scene().stages.back().moves.at(0).gripper, "end");
+  ASSERT_TRUE(stages->addStage("hold"));
+  EXPECT_EQ(stages->list()->currentRow(), static_cast<int>(n + 1));
+  ASSERT_TRUE(stages->setRelease("end")) << stages->message().toStdString();
+  EXPECT_EQ(doc->scene().stages.back().release, std::vector<std::string>{"end"});
+  EXPECT_FALSE(stages->setRelease("nobody"));
+  EXPECT_NE(stages->message().toStdString().find("no gripper is named 'nobody'"), std::string::npos)
+      << stages->message().toStdString();
+  // Released before a stage that moves it: refused.
+  stages->list()->setCurrentRow(static_cast<int>(n + 1));
+  const Scene before = doc->scene();
+  EXPECT_FALSE(stages->moveSelected(-1));  // the releasing hold before the move
+  EXPECT_NE(stages->message().toStdString().find("was released in"), std::string::npos)
+      << stages->message().toStdString();
+  EXPECT_EQ(doc->scene(), before);
+}
+
+TEST_F(Widgets, NodesPickedInTheViewBecomeAGrippersSelection) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  QTest::qWait(200);
+  SceneDocument* doc = window.document();
+  const ShellModel model = BuildShellModel(doc->scene());
+  // A point of the strip's surface just inside its top edge at x = 5 cm;
+  // the node nearest it is the edge node there.
+  const Eigen::Vector3d target(0.0502, 0.009, 0.0);
+  Eigen::Index expected = 0;
+  (model.reference.positions.rowwise() - target.transpose())
+      .rowwise()
+      .squaredNorm()
+      .minCoeff(&expected);
+  ASSERT_LT((model.reference.positions.row(expected) - Eigen::RowVector3d(0.05, 0.01, 0)).norm(),
+            1e-9);
+
+  window.viewport()->setPickMode(true);
+  const QPoint at = OnScreen(window.viewport(), target);
+  QTest::mouseClick(window.viewport(), Qt::LeftButton, {}, at);
+  ASSERT_EQ(window.pickedNodes(), std::vector<int>{static_cast<int>(expected)});
+  // A second click on it unpicks it; a third picks it again.
+  QTest::mouseClick(window.viewport(), Qt::LeftButton, {}, at);
+  EXPECT_TRUE(window.pickedNodes().empty());
+  QTest::mouseClick(window.viewport(), Qt::LeftButton, {}, at);
+  ASSERT_EQ(window.pickedNodes().size(), 1u);
+  window.viewport()->setPickMode(false);
+
+  HoldsPanel* grippers = window.grippers();
+  const size_t before = doc->scene().grippers.size();
+  ASSERT_TRUE(grippers->add("picked", 1)) << grippers->message().toStdString();
+  ASSERT_EQ(doc->scene().grippers.size(), before + 1);
+  const Gripper& g = doc->scene().grippers.back();
+  EXPECT_EQ(g.hold, Fixity::kClamp);
+  EXPECT_EQ(std::get<NodesSelection>(g.select.shape).nodes,
+            std::vector<int>{static_cast<int>(expected)});
+  // Removing the gripper the stages move is refused with the reader's words.
+  grippers->list()->setCurrentRow(0);
+  EXPECT_FALSE(grippers->removeSelected());
+  EXPECT_NE(grippers->message().toStdString().find("end"), std::string::npos)
+      << grippers->message().toStdString();
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene().grippers.size(), before);
+}
+
+}  // namespace
+}  // namespace drape

@@ -1,0 +1,56 @@
+// What the workbench's tests share: one QApplication for the process (made
+// on the first test, under a display), settings kept apart from the user's,
+// and how to tell the fabric's pixels in a picture.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QColor>
+#include <QImage>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+
+#include "ui/render/display.h"
+#include "ui/widgets/vtk_viewport.h"
+
+namespace drape {
+
+// The fabric's face colour (0.93, 0.62, 0.33) or its back (0.47, 0.36,
+// 0.62), shaded: saturated orange or violet.
+inline bool IsFabric(QRgb p) {
+  const QColor c(p);
+  const int h = c.hsvHue(), s = c.hsvSaturation();
+  return s > 80 && ((h >= 18 && h <= 40) || (h >= 250 && h <= 290));
+}
+
+inline int CountFabric(const QImage& image) {
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) n += IsFabric(image.pixel(x, y));
+  return n;
+}
+
+class Widgets : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!DisplayProblem().empty()) return;
+    QSurfaceFormat::setDefaultFormat(VtkViewport::defaultFormat());
+    static int argc = 1;
+    static char name[] = "widgets_tests";
+    static char* argv[] = {name, nullptr};
+    // Never destroyed: at exit Qt Charts' statics go before a static
+    // QApplication would, and its destructor then crashed the process.
+    static QApplication* app = new QApplication(argc, argv);
+    (void)app;
+    // Settings and autosaves of the tests stay out of the user's own.
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication::setOrganizationName("Drape Studio tests");
+    QApplication::setApplicationName("widgets_tests");
+  }
+  void SetUp() override {
+    if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
+  }
+};
+
+}  // namespace drape

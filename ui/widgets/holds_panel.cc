@@ -1,0 +1,240 @@
+#include "ui/widgets/holds_panel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+#include "core/model/overloaded.h"
+#include "core/model/scene.h"
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+namespace {
+
+// Supports and grippers alike: a name, the nodes and how they are held.
+struct Hold {
+  std::string name;
+  Selection select;
+  Fixity fixity = Fixity::kPosition;
+};
+
+std::vector<Hold> HoldsOf(const Scene& s, HoldsPanel::Role role) {
+  std::vector<Hold> holds;
+  if (role == HoldsPanel::Role::kSupports)
+    for (const Support& h : s.supports) holds.push_back({h.name, h.select, h.fix});
+  else
+    for (const Gripper& h : s.grippers) holds.push_back({h.name, h.select, h.hold});
+  return holds;
+}
+
+void SetHolds(Scene& s, HoldsPanel::Role role, const std::vector<Hold>& holds) {
+  if (role == HoldsPanel::Role::kSupports) {
+    s.supports.clear();
+    for (const Hold& h : holds) s.supports.push_back({h.name, h.select, h.fixity});
+  } else {
+    s.grippers.clear();
+    for (const Hold& h : holds) s.grippers.push_back({h.name, h.select, h.fixity});
+  }
+}
+
+QString Describe(const Selection& s) {
+  return std::visit(
+      Overloaded{
+          [](const PointSelection& p) {
+            return QString("point (%1, %2) m").arg(p.at[0]).arg(p.at[1]);
+          },
+          [](const LineSelection&) { return QString("line"); },
+          [](const BoxSelection&) { return QString("box"); },
+          [](const CornersSelection&) { return QString("corners"); },
+          [](const EdgeSelection& e) {
+            const char* names[] = {
+                "left edge", "right edge", "bottom edge", "top edge", "boundary"};
+            return QString(names[static_cast<int>(e.side)]);
+          },
+          [](const NodesSelection& n) { return QString("%1 nodes").arg(n.nodes.size()); },
+      },
+      s.shape);
+}
+
+}  // namespace
+
+HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
+    : QWidget(parent), role_(role), document_(document) {
+  const QString noun = role == Role::kSupports ? "support" : "gripper";
+  auto* layout = new QVBoxLayout(this);
+  list_ = new QListWidget(this);
+  layout->addWidget(list_, 1);
+  auto* form = new QFormLayout;
+  rule_ = new QComboBox(this);
+  rule_->addItems({"left", "right", "bottom", "top", "corners", "point", "picked"});
+  rule_->setToolTip(
+      "an edge, the corners, the node nearest a point, or the nodes picked in the "
+      "view (Pick nodes, then click the fabric)");
+  fixity_ = new QComboBox(this);
+  fixity_->addItems({"position (pinned)", "clamp (position and director)"});
+  x_ = new QDoubleSpinBox(this);
+  y_ = new QDoubleSpinBox(this);
+  for (QDoubleSpinBox* s : {x_, y_}) {
+    s->setRange(-100, 100);
+    s->setDecimals(4);
+    s->setSuffix(" m");
+  }
+  picked_label_ = new QLabel("no nodes picked", this);
+  form->addRow("holds", rule_);
+  form->addRow("point x", x_);
+  form->addRow("point y", y_);
+  form->addRow("picked", picked_label_);
+  form->addRow("fixity", fixity_);
+  layout->addLayout(form);
+  auto* buttons = new QHBoxLayout;
+  auto* add = new QPushButton("Add " + noun, this);
+  auto* hold_picked = new QPushButton("Hold picked", this);
+  hold_picked->setToolTip("the selected " + noun + " holds the picked nodes instead");
+  auto* remove = new QPushButton("Remove", this);
+  buttons->addWidget(add);
+  buttons->addWidget(hold_picked);
+  buttons->addWidget(remove);
+  layout->addLayout(buttons);
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setStyleSheet("color: #b00020");
+  layout->addWidget(message_);
+  connect(add, &QPushButton::clicked, this, [this] {
+    this->add(rule_->currentText(), fixity_->currentIndex(), x_->value(), y_->value());
+  });
+  connect(hold_picked, &QPushButton::clicked, this, &HoldsPanel::holdPicked);
+  connect(remove, &QPushButton::clicked, this, &HoldsPanel::removeSelected);
+  connect(fixity_, &QComboBox::activated, this, &HoldsPanel::setFixity);
+  connect(list_, &QListWidget::currentRowChanged, this, [this](int i) {
+    const auto holds = HoldsOf(document_->scene(), role_);
+    if (i < 0 || i >= static_cast<int>(holds.size())) return;
+    const QSignalBlocker block(fixity_);
+    fixity_->setCurrentIndex(holds[i].fixity == Fixity::kClamp ? 1 : 0);
+  });
+  connect(document_, &SceneDocument::changed, this, &HoldsPanel::refresh);
+  refresh();
+}
+
+QString HoldsPanel::message() const {
+  return message_->text();
+}
+
+void HoldsPanel::setPickedNodes(const std::vector<int>& nodes) {
+  picked_ = nodes;
+  picked_label_->setText(nodes.empty() ? "no nodes picked"
+                                       : QString("%1 nodes picked").arg(nodes.size()));
+}
+
+bool HoldsPanel::Apply(const QString& what, const Scene& after) {
+  QString problem;
+  const bool done = document_->tryApply(what, after, &problem);
+  message_->setText(problem);
+  return done;
+}
+
+bool HoldsPanel::add(const QString& rule, int fixity, double x, double y) {
+  Scene after = document_->scene();
+  auto holds = HoldsOf(after, role_);
+  const std::string noun = role_ == Role::kSupports ? "support " : "gripper ";
+  // Names are unique over supports and grippers (stages name grippers).
+  auto taken = [&](const std::string& name) {
+    return std::any_of(after.supports.begin(),
+                       after.supports.end(),
+                       [&](const Support& o) { return o.name == name; }) ||
+           std::any_of(after.grippers.begin(), after.grippers.end(), [&](const Gripper& g) {
+             return g.name == name;
+           });
+  };
+  int n = static_cast<int>(holds.size()) + 1;
+  while (taken(noun + std::to_string(n))) ++n;
+  Hold h;
+  h.name = noun + std::to_string(n);
+  if (rule == "corners") {
+    h.select.shape = CornersSelection{};
+  } else if (rule == "point") {
+    h.select.shape = PointSelection{{x, y}};
+  } else if (rule == "picked") {
+    if (picked_.empty()) {
+      message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
+      return false;
+    }
+    h.select.shape = NodesSelection{picked_};
+  } else {
+    const QStringList sides = {"left", "right", "bottom", "top"};
+    if (!sides.contains(rule)) return false;
+    h.select.shape = EdgeSelection{static_cast<Side>(sides.indexOf(rule))};
+  }
+  h.fixity = fixity == 1 ? Fixity::kClamp : Fixity::kPosition;
+  holds.push_back(h);
+  SetHolds(after, role_, holds);
+  if (!Apply(QString("add %1 (%2)").arg(QString::fromStdString(h.name)).arg(rule), after))
+    return false;
+  list_->setCurrentRow(list_->count() - 1);
+  return true;
+}
+
+bool HoldsPanel::setFixity(int fixity) {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  auto holds = HoldsOf(after, role_);
+  if (refreshing_ || i < 0 || i >= static_cast<int>(holds.size())) return false;
+  holds[i].fixity = fixity == 1 ? Fixity::kClamp : Fixity::kPosition;
+  SetHolds(after, role_, holds);
+  return Apply(QString("fixity of %1").arg(QString::fromStdString(holds[i].name)), after);
+}
+
+bool HoldsPanel::holdPicked() {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  auto holds = HoldsOf(after, role_);
+  if (i < 0 || i >= static_cast<int>(holds.size())) return false;
+  if (picked_.empty()) {
+    message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
+    return false;
+  }
+  holds[i].select = Selection{NodesSelection{picked_}, std::nullopt};
+  SetHolds(after, role_, holds);
+  return Apply(QString("%1 holds %2 picked nodes")
+                   .arg(QString::fromStdString(holds[i].name))
+                   .arg(picked_.size()),
+               after);
+}
+
+bool HoldsPanel::removeSelected() {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  auto holds = HoldsOf(after, role_);
+  if (i < 0 || i >= static_cast<int>(holds.size())) return false;
+  const QString name = QString::fromStdString(holds[i].name);
+  holds.erase(holds.begin() + i);
+  SetHolds(after, role_, holds);
+  return Apply("remove " + name, after);
+}
+
+void HoldsPanel::refresh() {
+  refreshing_ = true;
+  const auto holds = HoldsOf(document_->scene(), role_);
+  const int row = list_->currentRow();
+  const QSignalBlocker block(list_);  // rebuilding the list is not a selection
+  list_->clear();
+  for (const Hold& h : holds)
+    list_->addItem(QString("%1: %2, %3")
+                       .arg(QString::fromStdString(h.name))
+                       .arg(Describe(h.select))
+                       .arg(h.fixity == Fixity::kClamp ? "clamped" : "pinned"));
+  if (!holds.empty()) {
+    const int i = std::clamp(row, 0, static_cast<int>(holds.size()) - 1);
+    list_->setCurrentRow(i);
+    fixity_->setCurrentIndex(holds[i].fixity == Fixity::kClamp ? 1 : 0);
+  }
+  refreshing_ = false;
+}
+
+}  // namespace drape
