@@ -1,7 +1,7 @@
-// `drape-studio [SCENE] [--run] [--screenshot FILE] [--window-screenshot
-// FILE] [--quit]`: the
-// workbench. The flags are for scripts and CI: open a scene, run it, save
-// the window's 3-D view, quit.
+// `drape-studio [SCENE] [--run] [--select PART[:INDEX[:MOVE]]] [--screenshot
+// FILE] [--window-screenshot FILE] [--quit]`: the workbench. The flags are
+// for scripts and CI: open a scene, choose what to edit, run it, save the
+// window's 3-D view, quit.
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -13,6 +13,7 @@
 #include <cstdio>
 
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/model_tree.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace {
@@ -42,6 +43,23 @@ void Finish(drape::MainWindow& window,
   });
 }
 
+// "stages:1:0" → the tree's item for stage 1's move 0 (0-based), chosen.
+bool Select(drape::MainWindow& window, const QString& spec) {
+  using Part = drape::ModelTree::Part;
+  const QStringList parts = spec.split(':');
+  const QStringList names = {
+      "fabric", "material", "supports", "grippers", "obstacles", "stages", "probes", "solver"};
+  const int part = static_cast<int>(names.indexOf(parts[0]));
+  bool ok = part >= 0 && parts.size() <= 3;
+  const int index = parts.size() > 1 ? parts[1].toInt(&ok) : -1;
+  if (!ok) return false;
+  const int move = parts.size() > 2 ? parts[2].toInt(&ok) : -1;
+  QTreeWidgetItem* item = ok ? window.tree()->item(static_cast<Part>(part), index, move) : nullptr;
+  if (!item) return false;
+  window.tree()->setCurrentItem(item);
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -60,7 +78,12 @@ int main(int argc, char** argv) {
       "window-screenshot", "Save the whole window to FILE", "FILE");
   const QCommandLineOption quit("quit",
                                 "Quit when the run (if any) is done and the screenshot saved");
-  parser.addOptions({run, screenshot, window_shot, quit});
+  const QCommandLineOption select(
+      "select",
+      "Choose what to edit, as in the scene tree: fabric, material, supports, grippers, "
+      "obstacles, stages, probes or solver, with an index and a move (0-based), e.g. stages:1:0",
+      "PART[:INDEX[:MOVE]]");
+  parser.addOptions({run, select, screenshot, window_shot, quit});
   parser.process(app);
 
   drape::MainWindow window;
@@ -75,6 +98,12 @@ int main(int argc, char** argv) {
   const QStringList scenes = parser.positionalArguments();
   if (!scenes.isEmpty() && !window.openScene(scenes.front())) {
     std::fprintf(stderr, "drape-studio: cannot open %s\n", qPrintable(scenes.front()));
+    if (parser.isSet(quit)) return 1;
+  }
+  if (parser.isSet(select) && !Select(window, parser.value(select))) {
+    std::fprintf(stderr,
+                 "drape-studio: --select %s: no such part of the scene\n",
+                 qPrintable(parser.value(select)));
     if (parser.isSet(quit)) return 1;
   }
   const QString shot = parser.value(screenshot);

@@ -12,6 +12,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <QLabel>
 #include <QListWidget>
 #include <QMouseEvent>
 #include <QSignalSpy>
@@ -25,8 +26,10 @@
 #include "support/test_paths.h"
 #include "ui/widgets/holds_panel.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/path_handles.h"
+#include "ui/widgets/property_panel.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
 #include "widgets/gui_test.h"
@@ -76,8 +79,10 @@ TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
   ASSERT_TRUE(window.openScene(StripFold()));
   SceneDocument* doc = window.document();
   const Scene original = doc->scene();
-  // The fold stage R: its arc gets a centre and an end handle.
-  window.stages()->list()->setCurrentRow(1);
+  // The fold stage R's move, chosen in the scene tree: the stages editor
+  // comes up and the arc gets a centre and an end handle.
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kStages, 1, 0));
+  ASSERT_EQ(window.stages()->list()->currentRow(), 1);
   PathHandles* handles = window.pathHandles();
   ASSERT_EQ(handles->count(), 2);
   const Eigen::Vector3d start(-0.1, 0, 0);  // the left edge's centroid
@@ -128,9 +133,11 @@ TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
 
 TEST_F(Widgets, MovesAreTypedWithUnitsAndReadByTheSceneReader) {
   MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
   ASSERT_TRUE(window.openScene(StripFold()));
   SceneDocument* doc = window.document();
-  window.stages()->list()->setCurrentRow(2);  // T: a 1 cm slide
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kStages, 2));  // T: a slide
   MoveEditor* moves = window.stages()->moves();
   ASSERT_EQ(moves->stage(), 2);
   ASSERT_EQ(moves->currentMove(), 0);
@@ -239,6 +246,79 @@ TEST_F(Widgets, NodesPickedInTheViewBecomeAGrippersSelection) {
       << grippers->message().toStdString();
   doc->undoStack()->undo();
   EXPECT_EQ(doc->scene().grippers.size(), before);
+}
+
+// Area of a quad mesh (each quad as two triangles; exact for planar quads).
+double MeshArea(const ShellModel& model) {
+  double area = 0;
+  const auto& x = model.reference.positions;
+  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
+    const auto q = model.mesh.quads.row(e);
+    const Eigen::Vector3d a = x.row(q(0)), b = x.row(q(1)), c = x.row(q(2)), d = x.row(q(3));
+    area += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
+  }
+  return area;
+}
+
+TEST_F(Widgets, OutlinesAreEditedAsRectangleDiskOrPolygon) {
+  MainWindow window;
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "block-drape.json").string())));
+  SceneDocument* doc = window.document();
+  PropertyPanel* panel = window.properties();
+  const Scene original = doc->scene();
+
+  ASSERT_TRUE(panel->setOutline("rectangle", "30 cm, 10 cm", "1 cm, 0"))
+      << panel->fabricMessage().toStdString();
+  const auto& r = std::get<RectangleOutline>(doc->scene().fabric.outline);
+  EXPECT_EQ(r.size, (Vec2{0.3, 0.1}));
+  EXPECT_EQ(r.center, (Vec2{0.01, 0}));
+  ShellModel model = BuildShellModel(doc->scene());
+  EXPECT_NEAR(MeshArea(model), 0.03, 1e-12);
+
+  // The part hangs from its corners: a disk has none, and says so.
+  EXPECT_FALSE(panel->setOutline("disk", "10 cm"));
+  EXPECT_NE(panel->fabricMessage().toStdString().find("a disk has no corners"), std::string::npos)
+      << panel->fabricMessage().toStdString();
+  HoldsPanel* supports = window.supports();
+  ASSERT_TRUE(supports->add("point", 0, 0.0, 0.0)) << supports->message().toStdString();
+  supports->list()->setCurrentRow(0);
+  ASSERT_TRUE(supports->removeSelected()) << supports->message().toStdString();
+
+  // A disk of radius 15 cm (the probes stay on it) is meshed by size: its
+  // boundary nodes lie on the circle and its area tends to π r² (less the
+  // chords' segments).
+  ASSERT_TRUE(panel->setOutline("disk", "15 cm")) << panel->fabricMessage().toStdString();
+  ASSERT_TRUE(panel->setElementSize("1.5 cm")) << panel->fabricMessage().toStdString();
+  EXPECT_EQ(*doc->scene().fabric.mesh.size, 0.015);
+  model = BuildShellModel(doc->scene());
+  EXPECT_NEAR(model.reference.positions.rowwise().norm().maxCoeff(), 0.15, 1e-9);
+  EXPECT_NEAR(MeshArea(model), M_PI * 0.0225, 0.01 * M_PI * 0.0225);
+  EXPECT_LT(MeshArea(model), M_PI * 0.0225);
+  EXPECT_EQ(panel->meshInfo()->text().toStdString(),
+            std::to_string(model.NodeCount()) + " nodes, " +
+                std::to_string(model.mesh.ElementCount()) + " elements, " +
+                std::to_string(5 * model.NodeCount()) + " DOFs");
+
+  // A triangle: base 40 cm, height 30 cm.
+  ASSERT_TRUE(panel->setOutline("polygon", "-20 cm, -10 cm; 20 cm, -10 cm; 0, 20 cm"))
+      << panel->fabricMessage().toStdString();
+  EXPECT_EQ(std::get<PolygonOutline>(doc->scene().fabric.outline).vertices.size(), 3u);
+  EXPECT_NEAR(MeshArea(BuildShellModel(doc->scene())), 0.06, 1e-9);
+
+  // Wrong text: the reader's message, naming the key; nothing changes.
+  const Scene before = doc->scene();
+  EXPECT_FALSE(panel->setOutline("disk", "10 kg"));
+  EXPECT_NE(panel->fabricMessage().toStdString().find("radius"), std::string::npos)
+      << panel->fabricMessage().toStdString();
+  EXPECT_FALSE(panel->setOutline("polygon", "0, 0; 1 cm, 0"));
+  EXPECT_NE(panel->fabricMessage().toStdString().find("at least 3 vertices"), std::string::npos)
+      << panel->fabricMessage().toStdString();
+  EXPECT_EQ(doc->scene(), before);
+
+  QUndoStack* undo = doc->undoStack();
+  while (undo->canUndo()) undo->undo();
+  EXPECT_EQ(doc->scene(), original);
 }
 
 }  // namespace

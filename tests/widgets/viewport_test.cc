@@ -12,6 +12,8 @@
 
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRendererCollection.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -159,18 +161,25 @@ TEST_F(Widgets, RunPausesStepsStopsScrubsAndExports) {
   ASSERT_TRUE(
       window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
   QSignalSpy finished(&window, &MainWindow::runFinished);
+  // Paused at once: the solver runs the whole fold in a fifth of a second,
+  // so waiting for steps first would race it to the end.
   window.run();
-  ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() >= 3; }, 30000));
   window.pauseOrResume();
   ASSERT_TRUE(window.isPaused());
   QTest::qWait(300);  // a step that converged as the pause came still arrives
   const int paused_at = window.stepCount();
-  QTest::qWait(500);
-  EXPECT_EQ(window.stepCount(), paused_at) << "steps arrived while paused";
-  window.stepOnce();
-  ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() == paused_at + 1; }, 10000));
+  for (int k = 0; k < 2; ++k) {
+    window.stepOnce();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() == paused_at + k + 1; }, 10000));
+  }
   QTest::qWait(300);
-  EXPECT_EQ(window.stepCount(), paused_at + 1) << "Step let more than one step through";
+  ASSERT_EQ(window.stepCount(), paused_at + 2) << "Step let more than one step through";
+  QTest::qWait(500);
+  EXPECT_EQ(window.stepCount(), paused_at + 2) << "steps arrived while paused";
+  window.stepOnce();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window.stepCount() == paused_at + 3; }, 10000));
+  QTest::qWait(300);
+  EXPECT_EQ(window.stepCount(), paused_at + 3) << "Step let more than one step through";
   // Resume and pause again at once (the solver runs the whole fold in a
   // fifth of a second: waiting for steps to show would let it finish), then
   // stop from the pause.
@@ -211,6 +220,29 @@ TEST_F(Widgets, RunPausesStepsStopsScrubsAndExports) {
             std::to_string(size.width() + size.width() % 2) + "," +
                 std::to_string(size.height() + size.height() % 2) + "," +
                 std::to_string(window.stepCount() + 1));
+
+  // VTU of every state, as `drape export` writes them: the last file holds
+  // the last step's nodes where the run put them.
+  ASSERT_TRUE(window.exportVtu(QString::fromStdString(dir + "/vtu"), &error))
+      << error.toStdString();
+  int vtu = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir + "/vtu"))
+    vtu += entry.path().extension() == ".vtu";
+  EXPECT_EQ(vtu, window.stepCount() + 1);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/vtu/run.pvd"));
+  char last[64];
+  std::snprintf(last, sizeof last, "/vtu/step_%04d.vtu", window.stepCount());
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName((dir + last).c_str());
+  reader->Update();
+  const auto& x = window.step(window.stepCount()).state.positions;
+  ASSERT_EQ(reader->GetOutput()->GetNumberOfPoints(), x.rows());
+  double worst = 0;
+  for (vtkIdType i = 0; i < x.rows(); ++i) {
+    const double* p = reader->GetOutput()->GetPoint(i);
+    worst = std::max(worst, (Eigen::Vector3d(p[0], p[1], p[2]) - x.row(i).transpose()).norm());
+  }
+  EXPECT_LT(worst, 1e-15);  // written as doubles
   std::filesystem::remove_all(dir);
 }
 

@@ -197,11 +197,13 @@ std::vector<fs::path> ExportSurfaces(const ShellModel& model,
                                      const std::vector<ExportedStep>& steps,
                                      SurfaceFormat format,
                                      const fs::path& directory,
-                                     bool solid) {
+                                     bool solid,
+                                     const std::function<bool(int, int)>& progress) {
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec) throw std::runtime_error("cannot create " + directory.string() + ": " + ec.message());
   std::vector<fs::path> written;
+  size_t done = 0;
   for (const ExportedStep& s : steps) {
     const ShellState& state = *s.state;
     switch (format) {
@@ -256,10 +258,12 @@ std::vector<fs::path> ExportSurfaces(const ShellModel& model,
         break;
       }
     }
+    ++done;
+    if (progress && !progress(static_cast<int>(done), static_cast<int>(steps.size()))) break;
   }
   if (format == SurfaceFormat::kVtu) {
     const fs::path pvd = directory / "run.pvd";
-    WritePvd(steps, written, pvd);
+    WritePvd({steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(done)}, written, pvd);
     written.push_back(pvd);
   }
   return written;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,10 +28,15 @@ struct ExportedStep {
 // restarts in every stage). `solid` (STL, OBJ, PLY): both faces
 // h apart and the rim between them, a closed surface. Returns the files
 // written; throws std::runtime_error naming a file that cannot be written.
-std::vector<std::filesystem::path> ExportSurfaces(const ShellModel& model,
-                                                  const std::vector<ExportedStep>& steps,
-                                                  SurfaceFormat format,
-                                                  const std::filesystem::path& directory,
-                                                  bool solid = false);
+// `progress` (optional) hears (steps written, steps) after each step; when
+// it returns false the export stops there, keeping (and for VTU
+// collecting) the steps written.
+std::vector<std::filesystem::path> ExportSurfaces(
+    const ShellModel& model,
+    const std::vector<ExportedStep>& steps,
+    SurfaceFormat format,
+    const std::filesystem::path& directory,
+    bool solid = false,
+    const std::function<bool(int done, int all)>& progress = nullptr);
 
 }  // namespace drape

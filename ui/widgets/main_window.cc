@@ -11,6 +11,7 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -26,14 +27,21 @@
 
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
+#include "core/model/obstacle_anchor.h"
 #include "core/model/outline_geometry.h"
 #include "core/solve/path_handles.h"
 #include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/render/surface_export.h"
+#include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"
 #include "ui/widgets/material_dialog.h"
+#include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
+#include "ui/widgets/obstacles_panel.h"
 #include "ui/widgets/path_handles.h"
+#include "ui/widgets/probe_plot.h"
+#include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
@@ -92,26 +100,72 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   layout->addLayout(timeline);
   setCentralWidget(central);
   document_ = new SceneDocument(this);
+  tree_ = new ModelTree(document_, this);
+  tree_->setMinimumHeight(170);
+  auto* tree_dock = new QDockWidget("Scene", this);
+  tree_dock->setObjectName("Scene");
+  tree_dock->setWidget(tree_);
+  addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
   properties_ = new PropertyPanel(document_, this);
-  auto* dock = new QDockWidget("Properties", this);
-  dock->setWidget(properties_);
-  addDockWidget(Qt::LeftDockWidgetArea, dock);
-  stages_ = new StagesPanel(document_, this);
-  auto* stages_dock = new QDockWidget("Stages", this);
-  stages_dock->setWidget(stages_);
-  addDockWidget(Qt::LeftDockWidgetArea, stages_dock);
-  tabifyDockWidget(dock, stages_dock);
+  QDockWidget* properties_dock = addPanel("Properties", properties_, nullptr);
+  // The tree above, the editors tabbed below it.
+  splitDockWidget(tree_dock, properties_dock, Qt::Vertical);
   supports_ = new HoldsPanel(HoldsPanel::Role::kSupports, document_, this);
-  auto* supports_dock = new QDockWidget("Supports", this);
-  supports_dock->setWidget(supports_);
-  addDockWidget(Qt::LeftDockWidgetArea, supports_dock);
-  tabifyDockWidget(dock, supports_dock);
+  QDockWidget* supports_dock = addPanel("Supports", supports_, properties_dock);
   grippers_ = new HoldsPanel(HoldsPanel::Role::kGrippers, document_, this);
-  auto* grippers_dock = new QDockWidget("Grippers", this);
-  grippers_dock->setWidget(grippers_);
-  addDockWidget(Qt::LeftDockWidgetArea, grippers_dock);
-  tabifyDockWidget(dock, grippers_dock);
-  dock->raise();
+  QDockWidget* grippers_dock = addPanel("Grippers", grippers_, properties_dock);
+  obstacles_ = new ObstaclesPanel(document_, this);
+  QDockWidget* obstacles_dock = addPanel("Obstacles", obstacles_, properties_dock);
+  stages_ = new StagesPanel(document_, this);
+  QDockWidget* stages_dock = addPanel("Stages", stages_, properties_dock);
+  probes_ = new ProbesPanel(document_, this);
+  QDockWidget* probes_dock = addPanel("Probes", probes_, properties_dock);
+  // In ModelTree::Part's order.
+  editor_docks_ = {properties_dock,
+                   properties_dock,
+                   supports_dock,
+                   grippers_dock,
+                   obstacles_dock,
+                   stages_dock,
+                   probes_dock,
+                   properties_dock};
+  properties_dock->raise();
+  resizeDocks({tree_dock, properties_dock}, {220, 700}, Qt::Vertical);
+  // Handles show while their editor is up: a path's with the stages, an
+  // obstacle's with the obstacles.
+  for (QDockWidget* d : {stages_dock, obstacles_dock})
+    connect(d, &QDockWidget::visibilityChanged, this, [this] { updateHandles(); });
+  stages_dock_ = stages_dock;
+  obstacles_dock_ = obstacles_dock;
+  plot_ = new RunPlot(this);
+  auto* plot_dock = new QDockWidget("Run", this);
+  plot_dock->setObjectName("Run");
+  plot_dock->setWidget(plot_);
+  addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
+  probe_plot_ = new ProbePlot(this);
+  auto* probe_dock = new QDockWidget("Probe plot", this);
+  probe_dock->setObjectName("Probe plot");
+  probe_dock->setWidget(probe_plot_);
+  addDockWidget(Qt::BottomDockWidgetArea, probe_dock);
+  tabifyDockWidget(plot_dock, probe_dock);
+  residual_plot_ = new ResidualPlot(this);
+  auto* residual_dock = new QDockWidget("Residuals", this);
+  residual_dock->setObjectName("Residuals");
+  residual_dock->setWidget(residual_plot_);
+  addDockWidget(Qt::BottomDockWidgetArea, residual_dock);
+  tabifyDockWidget(plot_dock, residual_dock);
+  plot_dock->raise();
+  connect(tree_, &ModelTree::chosen, this, [this](ModelTree::Part part, int index, int move) {
+    showEditor(static_cast<int>(part), index, move);
+  });
+  connect(tree_, &ModelTree::opened, this, [this](ModelTree::Part part, int, int) {
+    if (part == ModelTree::Part::kMaterial && material_->isEnabled()) material_->trigger();
+  });
+  connect(document_, &SceneDocument::changed, this, &MainWindow::onDocumentChanged);
+  connect(timeline_, &QSlider::valueChanged, this, [this](int i) {
+    follow_ = i == stepCount();
+    showStep(i);
+  });
   handles_ = new PathHandles(viewport_->interactor(), this);
   connect(handles_, &PathHandles::released, this, &MainWindow::onPathDragged);
   connect(handles_, &PathHandles::previewed, this, [this] { viewport_->requestRender(); });
@@ -120,26 +174,61 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     handle_move_ = move;
     updateHandles();
   });
-  connect(viewport_, &VtkViewport::picked, this, &MainWindow::pickNear);
-  plot_ = new RunPlot(this);
-  auto* plot_dock = new QDockWidget("Run", this);
-  plot_dock->setWidget(plot_);
-  addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
-  connect(document_, &SceneDocument::changed, this, &MainWindow::onDocumentChanged);
-  connect(timeline_, &QSlider::valueChanged, this, [this](int i) {
-    follow_ = i == stepCount();
-    showStep(i);
+  obstacle_handles_ = new DragHandles(viewport_->interactor(), this);
+  connect(obstacle_handles_, &DragHandles::released, this, &MainWindow::onObstacleDragged);
+  connect(obstacle_handles_, &DragHandles::dragged, this, [this] { viewport_->requestRender(); });
+  connect(obstacles_, &ObstaclesPanel::obstacleSelected, this, [this](int i) {
+    handle_obstacle_ = i;
+    updateHandles();
   });
+  connect(viewport_, &VtkViewport::picked, this, &MainWindow::pickNear);
   buildActions();
   updateControls();
   resize(1280, 960);
   QSettings settings;
   if (settings.contains("window/geometry"))
     restoreGeometry(settings.value("window/geometry").toByteArray());
+  if (settings.contains("window/docks")) restoreState(settings.value("window/docks").toByteArray());
   autosave_timer_ = new QTimer(this);
   autosave_timer_->setInterval(60 * 1000);
   connect(autosave_timer_, &QTimer::timeout, this, &MainWindow::autosave);
   autosave_timer_->start();
+}
+
+QDockWidget* MainWindow::addPanel(const QString& title, QWidget* panel, QDockWidget* tab_with) {
+  auto* dock = new QDockWidget(title, this);
+  dock->setObjectName(title);  // for saveState
+  dock->setWidget(panel);
+  addDockWidget(Qt::LeftDockWidgetArea, dock);
+  if (tab_with) tabifyDockWidget(tab_with, dock);
+  return dock;
+}
+
+// The editor of what the model tree chose, raised, with the item selected.
+void MainWindow::showEditor(int part, int index, int move) {
+  if (part < 0 || part >= static_cast<int>(editor_docks_.size())) return;
+  editor_docks_[part]->raise();
+  if (index < 0) return;
+  switch (static_cast<ModelTree::Part>(part)) {
+    case ModelTree::Part::kSupports:
+      supports_->list()->setCurrentRow(index);
+      break;
+    case ModelTree::Part::kGrippers:
+      grippers_->list()->setCurrentRow(index);
+      break;
+    case ModelTree::Part::kObstacles:
+      obstacles_->list()->setCurrentRow(index);
+      break;
+    case ModelTree::Part::kStages:
+      stages_->list()->setCurrentRow(index);
+      if (move >= 0) stages_->moves()->list()->setCurrentRow(move);
+      break;
+    case ModelTree::Part::kProbes:
+      probes_->list()->setCurrentRow(index);
+      break;
+    default:
+      break;
+  }
 }
 
 QString MainWindow::autosavePath() {
@@ -215,6 +304,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   }
   stop();
   QSettings().setValue("window/geometry", saveGeometry());
+  QSettings().setValue("window/docks", saveState());
   QFile::remove(autosavePath());  // a clean close: nothing to recover
   event->accept();
 }
@@ -288,15 +378,35 @@ void MainWindow::buildActions() {
   run_ = bar->addAction("Run", this, &MainWindow::run);
   run_->setShortcut(Qt::Key_F5);
   pause_ = bar->addAction("Pause", this, &MainWindow::pauseOrResume);
+  pause_->setShortcut(Qt::Key_F6);
   step_ = bar->addAction("Step", this, &MainWindow::stepOnce);
+  step_->setShortcut(Qt::Key_F7);
   stop_ = bar->addAction("Stop", this, &MainWindow::stop);
   stop_->setShortcut(Qt::Key_Escape);
   bar->addSeparator();
-  bar->addAction("Export image…", this, [this] {
+  QAction* export_image = bar->addAction("Export image…", this, [this] {
     const QString file = QFileDialog::getSaveFileName(this, "Export image", {}, "PNG (*.png)");
     QString error;
     if (!file.isEmpty() && !exportImage(file, &error)) ShowError(this, "Export failed", error);
   });
+  export_image->setShortcut(Qt::CTRL | Qt::Key_E);
+  QMenu* view = menuBar()->addMenu("&View");
+  view->addAction("&Previous step", this, [this] { showStep(currentStep() - 1); })
+      ->setShortcut(Qt::ALT | Qt::Key_Left);
+  view->addAction("&Next step", this, [this] { showStep(currentStep() + 1); })
+      ->setShortcut(Qt::ALT | Qt::Key_Right);
+  view->addAction("&Reference state", this, [this] { showStep(0); })
+      ->setShortcut(Qt::ALT | Qt::Key_Home);
+  view->addAction("&Last step", this, [this] { showStep(stepCount()); })
+      ->setShortcut(Qt::ALT | Qt::Key_End);
+  view->addAction("P&lay", this, &MainWindow::play)->setShortcut(Qt::CTRL | Qt::Key_Space);
+  QAction* export_vtu = bar->addAction("Export VTU…", this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, "Export the run as VTU into");
+    QString error;
+    if (!dir.isEmpty() && !exportVtu(dir, &error) && !error.isEmpty())
+      ShowError(this, "Export failed", error);
+  });
+  export_vtu->setToolTip("every step as .vtu with a run.pvd ParaView plays");
   bar->addAction("Export animation…", this, [this] {
     const QString file =
         QFileDialog::getSaveFileName(this, "Export animation", {}, "Movies (*.mp4 *.gif *.ogv)");
@@ -315,6 +425,8 @@ void MainWindow::updateControls() {
   stages_->setEnabled(!running_);
   supports_->setEnabled(!running_);
   grippers_->setEnabled(!running_);
+  obstacles_->setEnabled(!running_);
+  probes_->setEnabled(!running_);
   material_->setEnabled(!running_ && model_ != nullptr);
   undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
   redo_->setEnabled(!running_ && document_->undoStack()->canRedo());
@@ -417,12 +529,37 @@ void MainWindow::rebuildRenderer() {
 // The selected move's path gets handles, unless a run is going on (edits
 // wait for it) or the move carries no gripper of the model.
 void MainWindow::updateHandles() {
+  if (!handles_ || !obstacle_handles_) return;  // still being built
   handles_->clear();
-  if (running_ || !renderer_ || handle_stage_ < 0) return viewport_->requestRender();
-  for (const GripperMove& m : GripperMoves(scene_, *model_))
-    if (m.stage == handle_stage_ && m.move == handle_move_)
-      handles_->show(renderer_->renderer(), scene_.stages[m.stage].moves[m.move].path, m.start);
+  obstacle_handles_->clear();
   viewport_->requestRender();
+  if (running_ || !renderer_) return;
+  if (stages_dock_->isVisible())
+    for (const GripperMove& m : GripperMoves(scene_, *model_))
+      if (m.stage == handle_stage_ && m.move == handle_move_)
+        handles_->show(renderer_->renderer(), scene_.stages[m.stage].moves[m.move].path, m.start);
+  if (obstacles_dock_->isVisible() && handle_obstacle_ >= 0 &&
+      handle_obstacle_ < static_cast<int>(scene_.obstacles.size()))
+    if (const auto anchor = ObstacleAnchor(scene_.obstacles[handle_obstacle_]))
+      obstacle_handles_->show(renderer_->renderer(), {*anchor});
+}
+
+void MainWindow::onObstacleDragged() {
+  Scene after = document_->scene();
+  if (handle_obstacle_ < 0 || handle_obstacle_ >= static_cast<int>(after.obstacles.size())) return;
+  Obstacle& o = after.obstacles[handle_obstacle_];
+  const auto anchor = ObstacleAnchor(o);
+  if (!anchor) return;
+  o = Translated(o, obstacle_handles_->position(0) - *anchor);
+  const QString what = "move " + QString::fromStdString(o.name);
+  // Applied once VTK has finished with the drag's events (see onPathDragged).
+  QTimer::singleShot(0, this, [this, what, after] {
+    QString problem;
+    if (!document_->tryApply(what, after, &problem)) {
+      statusBar()->showMessage(problem);
+      updateHandles();
+    }
+  });
 }
 
 void MainWindow::onPathDragged(const Path& path) {
@@ -460,6 +597,10 @@ void MainWindow::pickNear(const Eigen::Vector3d& point) {
     picked_.erase(it);
   supports_->setPickedNodes(picked_);
   grippers_->setPickedNodes(picked_);
+  std::vector<std::array<double, 2>> at;
+  for (int n : picked_)
+    at.push_back({model_->reference.positions(n, 0), model_->reference.positions(n, 1)});
+  probes_->setPicked(at);
   updateMarkers();
   statusBar()->showMessage(QString("node %1 %2; %3 nodes picked")
                                .arg(node)
@@ -471,6 +612,7 @@ void MainWindow::clearPicked() {
   picked_.clear();
   supports_->setPickedNodes(picked_);
   grippers_->setPickedNodes(picked_);
+  probes_->setPicked({});
   updateMarkers();
 }
 
@@ -590,6 +732,37 @@ bool MainWindow::exportAnimation(const QString& file, double fps, QString* error
   }
 }
 
+bool MainWindow::exportVtu(const QString& directory, QString* error) {
+  if (!model_ || steps_.empty() || running_) {
+    if (error) *error = "nothing to export: run the scene first";
+    return false;
+  }
+  ShellState reference = model_->reference;
+  std::vector<ExportedStep> steps{{&reference, 0, -1, 0.0}};
+  for (const auto& s : steps_) steps.push_back({&s->state, s->step, s->stage, s->lambda});
+  QProgressDialog dialog(
+      "Writing VTU to " + directory, "Cancel", 0, static_cast<int>(steps.size()), this);
+  dialog.setWindowModality(Qt::WindowModal);
+  dialog.setMinimumDuration(500);
+  try {
+    const auto files = ExportSurfaces(
+        *model_, steps, SurfaceFormat::kVtu, directory.toStdString(), false, [&](int done, int) {
+          dialog.setValue(done);
+          QCoreApplication::processEvents();
+          return !dialog.wasCanceled();
+        });
+    statusBar()->showMessage(
+        QString("wrote %1 files to %2%3")
+            .arg(files.size())
+            .arg(directory)
+            .arg(dialog.wasCanceled() ? " (cancelled: the steps before are kept)" : ""));
+    return !dialog.wasCanceled();
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return false;
+  }
+}
+
 void MainWindow::showStep(int index) {
   if (!renderer_) return;
   index = std::clamp(index, 0, stepCount());
@@ -632,8 +805,12 @@ void MainWindow::run() {
   if (!model_ || running_) return;
   steps_.clear();
   plot_->clear();
+  probe_plot_->clear();
+  residual_plot_->clear();
   timeline_->setRange(0, 0);
   follow_ = true;
+  handles_->clear();  // no edits while the run goes on
+  obstacle_handles_->clear();
   thread_ = new QThread(this);
   worker_ = new SolverWorker;
   worker_->moveToThread(thread_);
@@ -668,6 +845,8 @@ void MainWindow::stop() {
 
 void MainWindow::onStep(std::shared_ptr<const StepState> step) {
   plot_->add(*step);
+  probe_plot_->add(*step);
+  residual_plot_->add(*step);
   steps_.push_back(std::move(step));
   const QSignalBlocker block(timeline_);
   timeline_->setRange(0, stepCount());
@@ -687,6 +866,7 @@ void MainWindow::onFinished(const SolveSummary& summary) {
   worker_ = nullptr;
   statusBar()->showMessage(QString::fromStdString(summary.BriefReport()));
   updateControls();
+  updateHandles();
   emit runFinished(summary);
 }
 

@@ -18,6 +18,7 @@
 
 class QAction;
 class QCloseEvent;
+class QDockWidget;
 class QMenu;
 class QComboBox;
 class QLabel;
@@ -27,8 +28,14 @@ class QTimer;
 
 namespace drape {
 
+class DragHandles;
 class HoldsPanel;
+class ModelTree;
+class ObstaclesPanel;
 class PathHandles;
+class ProbePlot;
+class ProbesPanel;
+class ResidualPlot;
 class PropertyPanel;
 class RunPlot;
 class StagesPanel;
@@ -51,7 +58,13 @@ class MainWindow : public QMainWindow {
   StagesPanel* stages() const { return stages_; }
   HoldsPanel* supports() const { return supports_; }
   HoldsPanel* grippers() const { return grippers_; }
+  ObstaclesPanel* obstacles() const { return obstacles_; }
+  ProbesPanel* probes() const { return probes_; }
+  ModelTree* tree() const { return tree_; }
+  ProbePlot* probePlot() const { return probe_plot_; }
+  ResidualPlot* residualPlot() const { return residual_plot_; }
   PathHandles* pathHandles() const { return handles_; }
+  DragHandles* obstacleHandles() const { return obstacle_handles_; }
   // Nodes picked in the viewport (pick mode), in the order picked.
   const std::vector<int>& pickedNodes() const { return picked_; }
   // A new unsaved scene from a template (resources/scenes/*.json).
@@ -81,6 +94,10 @@ class MainWindow : public QMainWindow {
   // The run as a movie or frame folder (the same code as `drape animate`),
   // with a progress dialog that can cancel; false when cancelled or failed.
   bool exportAnimation(const QString& file, double fps = 25, QString* error = nullptr);
+  // Every state of the run (the reference first) as VTU files with a
+  // run.pvd collection in `directory` (the same code as `drape export`),
+  // with a progress dialog that can cancel (keeping the steps written).
+  bool exportVtu(const QString& directory, QString* error = nullptr);
 
  public slots:
   void run();
@@ -113,6 +130,9 @@ class MainWindow : public QMainWindow {
   void updateHandles();
   void updateMarkers();
   void onPathDragged(const Path& path);
+  void onObstacleDragged();
+  void showEditor(int part, int index, int move);
+  QDockWidget* addPanel(const QString& title, QWidget* panel, QDockWidget* tab_with);
 
   Scene scene_;
   std::unique_ptr<ShellModel> model_;
@@ -124,7 +144,16 @@ class MainWindow : public QMainWindow {
   RunPlot* plot_ = nullptr;
   StagesPanel* stages_ = nullptr;
   HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;
+  ObstaclesPanel* obstacles_ = nullptr;
+  ProbesPanel* probes_ = nullptr;
+  ModelTree* tree_ = nullptr;
+  ProbePlot* probe_plot_ = nullptr;
+  ResidualPlot* residual_plot_ = nullptr;
+  std::vector<QDockWidget*> editor_docks_;  // by ModelTree::Part
+  QDockWidget *stages_dock_ = nullptr, *obstacles_dock_ = nullptr;
   PathHandles* handles_ = nullptr;
+  DragHandles* obstacle_handles_ = nullptr;
+  int handle_obstacle_ = -1;                  // the obstacle with a handle
   int handle_stage_ = -1, handle_move_ = -1;  // the move whose path has handles
   std::vector<int> picked_;
   QSlider* timeline_ = nullptr;

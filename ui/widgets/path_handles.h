@@ -1,27 +1,23 @@
-// 3-D handles on one move's path in the viewport: spheres a user drags
-// (a line's end, an arc's centre and end, each keyframe), with the path
-// drawn as the gripper would follow it while the drag goes on. The path
-// itself is edited by core's MovePathHandle; this class only turns drags
-// into handle positions and reports the path that results.
+// 3-D handles on one move's path in the viewport: a line's end, an arc's
+// centre and end, each keyframe, drawn with the path as the gripper would
+// follow it while a drag goes on. The path itself is edited by core's
+// MovePathHandle; this class turns drags into the path that results.
 #pragma once
 
 #include <vtkSmartPointer.h>
 #include <Eigen/Core>
 #include <QObject>
 
-#include <vector>
-
 #include "core/model/scene.h"
 
 class vtkActor;
-class vtkHandleWidget;
-class vtkObject;
 class vtkPolyData;
 class vtkRenderer;
 class vtkRenderWindowInteractor;
-class vtkSphereHandleRepresentation;
 
 namespace drape {
+
+class DragHandles;
 
 class PathHandles : public QObject {
   Q_OBJECT
@@ -34,7 +30,7 @@ class PathHandles : public QObject {
   void show(vtkRenderer* renderer, const Path& path, const Eigen::Vector3d& start);
   // Takes the handles and the preview out of their renderer.
   void clear();
-  int count() const { return static_cast<int>(handles_.size()); }
+  int count() const;
   Eigen::Vector3d position(int handle) const;
   // The path as the handles now make it (changes while a drag goes on).
   const Path& path() const { return path_; }
@@ -44,16 +40,10 @@ class PathHandles : public QObject {
   void released(const drape::Path& path);   // when a drag ends
 
  private:
-  void OnInteraction(vtkObject* caller, unsigned long event, void* data);
+  void OnDrag(int handle);
   void UpdatePreview();
 
-  struct Handle {
-    vtkSmartPointer<vtkHandleWidget> widget;
-    vtkSmartPointer<vtkSphereHandleRepresentation> representation;
-  };
-  vtkRenderWindowInteractor* interactor_;
-  vtkSmartPointer<vtkRenderer> renderer_;  // kept: renderers are remade on edits
-  std::vector<Handle> handles_;
+  DragHandles* handles_;
   vtkSmartPointer<vtkPolyData> line_;
   vtkSmartPointer<vtkActor> preview_;
   Path path_;

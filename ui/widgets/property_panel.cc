@@ -10,6 +10,12 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include "core/io/scene_writer.h"
+#include "core/model/fabric_mesh.h"
+#include "core/model/overloaded.h"
+#include "core/model/scene_error.h"
 #include "ui/widgets/scene_document.h"
 
 namespace drape {
@@ -77,6 +83,24 @@ QString Positive(double v) {
 QString NonNegative(double v) {
   return v >= 0 && std::isfinite(v) ? QString() : "must be ≥ 0";
 }
+// "0.5" is a number (SI), "5 cm" a quantity the scene reader converts.
+nlohmann::json Component(const QString& text) {
+  bool number = false;
+  const double v = text.trimmed().toDouble(&number);
+  if (number) return v;
+  return text.trimmed().toStdString();
+}
+
+nlohmann::json Pair(const QString& text) {
+  nlohmann::json v = nlohmann::json::array();
+  for (const QString& part : text.split(',')) v.push_back(Component(part));
+  return v;
+}
+
+QString Text(const Vec2& v) {
+  return QString("%1, %2").arg(v[0]).arg(v[1]);
+}
+
 // SI value and unit as the field shows a value it did not type.
 QString Si(double v, const char* unit) {
   return QString("%1 %2").arg(v, 0, 'g', 6).arg(unit);
@@ -96,18 +120,50 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
     : QWidget(parent), document_(document) {
   auto* layout = new QVBoxLayout(this);
 
-  auto* fabric = new QGroupBox("Fabric mesh", this);
+  auto* fabric = new QGroupBox("Fabric", this);
   auto* fabric_form = new QFormLayout(fabric);
+  shape_ = new QComboBox(fabric);
+  shape_->addItems({"rectangle", "disk", "polygon"});
+  extent_ = new QLineEdit(fabric);
+  center_ = new QLineEdit(fabric);
+  element_size_ = new QLineEdit(fabric);
+  element_size_->setToolTip("target element edge, e.g. 1 cm");
   nx_ = new QSpinBox(fabric);
   ny_ = new QSpinBox(fabric);
   for (QSpinBox* s : {nx_, ny_}) s->setRange(1, 400);
   mesh_info_ = new QLabel(fabric);
+  fabric_message_ = new QLabel(fabric);
+  fabric_message_->setWordWrap(true);
+  fabric_message_->setStyleSheet("color: #b00020");
+  fabric_form->addRow("outline", shape_);
+  fabric_form->addRow("size", extent_);
+  fabric_form->addRow("centre [m]", center_);
   fabric_form->addRow("elements along x", nx_);
   fabric_form->addRow("elements along y", ny_);
+  fabric_form->addRow("element size", element_size_);
   fabric_form->addRow(mesh_info_);
+  fabric_form->addRow(fabric_message_);
+  fabric_form_ = fabric_form;
   layout->addWidget(fabric);
   for (QSpinBox* s : {nx_, ny_})
     connect(s, &QSpinBox::editingFinished, this, &PropertyPanel::EditMesh);
+  connect(shape_, &QComboBox::activated, this, [this] {
+    // Another shape starts from a part of about the same size.
+    const QString shape = shape_->currentText();
+    if (shape == "rectangle")
+      setOutline(shape, "20 cm, 20 cm");
+    else if (shape == "disk")
+      setOutline(shape, "10 cm");
+    else
+      setOutline(shape, "-10 cm, -10 cm; 10 cm, -10 cm; 0, 10 cm");
+  });
+  for (QLineEdit* e : {extent_, center_})
+    connect(e, &QLineEdit::editingFinished, this, [this] {
+      if (!refreshing_) setOutline(shape_->currentText(), extent_->text(), center_->text());
+    });
+  connect(element_size_, &QLineEdit::editingFinished, this, [this] {
+    if (!refreshing_) setElementSize(element_size_->text());
+  });
 
   auto* material = new QGroupBox("Material", this);
   auto* form = new QFormLayout(material);
@@ -175,6 +231,56 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   refresh();
 }
 
+QString PropertyPanel::fabricMessage() const {
+  return fabric_message_->text();
+}
+
+bool PropertyPanel::ApplyFabric(const QString& what, const nlohmann::json& fabric) {
+  // The scene reader reads the fabric, so wrong text gets its message.
+  nlohmann::json document = nlohmann::json::parse(SceneToJson(document_->scene()).dump());
+  document["fabric"] = fabric;
+  QString problem;
+  try {
+    document_->tryApply(what, document_->parse(document), &problem);
+  } catch (const SceneError& e) {
+    problem = QString::fromStdString(e.what());
+  }
+  fabric_message_->setText(problem);
+  return problem.isEmpty();
+}
+
+bool PropertyPanel::setOutline(const QString& shape, const QString& extent, const QString& center) {
+  nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
+  nlohmann::json outline;
+  if (shape == "rectangle") {
+    outline["rectangle"] = {{"size", Pair(extent)}, {"center", Pair(center)}};
+  } else if (shape == "disk") {
+    outline["disk"] = {{"radius", Component(extent)}, {"center", Pair(center)}};
+  } else if (shape == "polygon") {
+    nlohmann::json vertices = nlohmann::json::array();
+    for (const QString& v : extent.split(';', Qt::SkipEmptyParts)) vertices.push_back(Pair(v));
+    outline["polygon"] = vertices;
+  } else {
+    return false;
+  }
+  const bool was_rectangle = fabric["outline"].contains("rectangle");
+  fabric["outline"] = outline;
+  // Element counts are for rectangles; other shapes are meshed by size.
+  if (shape != "rectangle" && fabric["mesh"].contains("elements")) {
+    fabric["mesh"].erase("elements");
+    if (!fabric["mesh"].contains("size")) fabric["mesh"]["size"] = 0.01;
+  }
+  if (shape == "rectangle" && !was_rectangle && !fabric["mesh"].contains("elements"))
+    fabric["mesh"] = {{"elements", {20, 20}}};
+  return ApplyFabric(QString("%1 outline %2").arg(shape, extent), fabric);
+}
+
+bool PropertyPanel::setElementSize(const QString& size) {
+  nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
+  fabric["mesh"] = {{"size", Component(size)}};
+  return ApplyFabric("element size " + size, fabric);
+}
+
 void PropertyPanel::EditMesh() {
   if (refreshing_) return;
   Scene after = document_->scene();
@@ -186,18 +292,49 @@ void PropertyPanel::refresh() {
   refreshing_ = true;
   const Scene& s = document_->scene();
   const bool rectangle = std::holds_alternative<RectangleOutline>(s.fabric.outline);
-  nx_->setEnabled(rectangle);
-  ny_->setEnabled(rectangle);
+  const bool by_count = rectangle && s.fabric.mesh.elements.has_value();
+  std::visit(Overloaded{[&](const RectangleOutline& r) {
+                          shape_->setCurrentText("rectangle");
+                          extent_->setText(Text(r.size));
+                          center_->setText(Text(r.center));
+                        },
+                        [&](const DiskOutline& d) {
+                          shape_->setCurrentText("disk");
+                          extent_->setText(QString::number(d.radius));
+                          center_->setText(Text(d.center));
+                        },
+                        [&](const PolygonOutline& p) {
+                          shape_->setCurrentText("polygon");
+                          QStringList vertices;
+                          for (const Vec2& v : p.vertices) vertices << Text(v);
+                          extent_->setText(vertices.join("; "));
+                        }},
+             s.fabric.outline);
+  auto label = [&](QWidget* field, const QString& text) {
+    if (auto* l = qobject_cast<QLabel*>(fabric_form_->labelForField(field))) l->setText(text);
+  };
+  label(extent_,
+        rectangle                                               ? "size [m]"
+        : std::holds_alternative<DiskOutline>(s.fabric.outline) ? "radius [m]"
+                                                                : "vertices [m]");
+  fabric_form_->setRowVisible(center_, !std::holds_alternative<PolygonOutline>(s.fabric.outline));
+  fabric_form_->setRowVisible(nx_, by_count);
+  fabric_form_->setRowVisible(ny_, by_count);
+  fabric_form_->setRowVisible(element_size_, !by_count);
   if (s.fabric.mesh.elements) {
     nx_->setValue((*s.fabric.mesh.elements)[0]);
     ny_->setValue((*s.fabric.mesh.elements)[1]);
-    const int nodes = (nx_->value() + 1) * (ny_->value() + 1);
+  }
+  element_size_->setText(s.fabric.mesh.size ? Si(*s.fabric.mesh.size, "m") : QString());
+  // The count of the mesh the engine will make (Gmsh's for curved outlines).
+  try {
+    const Mesh mesh = MeshFabric(s.fabric);
     mesh_info_->setText(QString("%1 nodes, %2 elements, %3 DOFs")
-                            .arg(nodes)
-                            .arg(nx_->value() * ny_->value())
-                            .arg(5 * nodes));
-  } else {
-    mesh_info_->setText("meshed by size");
+                            .arg(mesh.NodeCount())
+                            .arg(mesh.ElementCount())
+                            .arg(5 * mesh.NodeCount()));
+  } catch (const std::exception& e) {
+    mesh_info_->setText(QString::fromStdString(e.what()));
   }
   thickness_->setValue(s.material.thickness, Si(s.material.thickness, "m"));
   weight_->setValue(s.material.areal_weight, Si(s.material.areal_weight, "Pa"));

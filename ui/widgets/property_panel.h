@@ -9,9 +9,12 @@
 
 #include <functional>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/model/units.h"
 
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -59,20 +62,34 @@ class PropertyPanel : public QWidget {
   QuantityField* thickness() const { return thickness_; }
   QuantityField* weight() const { return weight_; }
   QuantityField* modulus() const { return modulus_; }
+  QComboBox* outlineShape() const { return shape_; }
   QSpinBox* elementsX() const { return nx_; }
   QSpinBox* elementsY() const { return ny_; }
   QComboBox* solverPreset() const { return preset_; }
   QLabel* meshInfo() const { return mesh_info_; }
+  QString fabricMessage() const;
+
+  // The outline: shape "rectangle" (extent "width, height"), "disk" (extent
+  // the radius) or "polygon" (extent "x, y; x, y; …"), with its centre
+  // ("x, y"; not for polygons); units allowed. Read by the scene reader;
+  // false with its message when wrong.
+  bool setOutline(const QString& shape, const QString& extent, const QString& center = "0, 0");
+  // The target element edge of outlines meshed by size.
+  bool setElementSize(const QString& size);
 
  public slots:
   void refresh();  // from the document's scene
 
  private:
   void EditMesh();
+  bool ApplyFabric(const QString& what, const nlohmann::json& fabric);
 
   SceneDocument* document_;
+  QFormLayout* fabric_form_;
+  QComboBox* shape_;
+  QLineEdit *extent_, *center_, *element_size_;
   QSpinBox *nx_, *ny_;
-  QLabel* mesh_info_;
+  QLabel *mesh_info_, *fabric_message_;
   QuantityField *thickness_, *weight_, *modulus_, *poisson_, *angle_;
   QComboBox* preset_;
   bool refreshing_ = false;

@@ -1,0 +1,47 @@
+#include "core/model/obstacle_anchor.h"
+
+#include "core/model/overloaded.h"
+
+namespace drape {
+namespace {
+
+Eigen::Vector3d V(const Vec3& v) {
+  return {v[0], v[1], v[2]};
+}
+void Add(Vec3& v, const Eigen::Vector3d& by) {
+  for (int i = 0; i < 3; ++i) v[i] += by[i];
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> ObstacleAnchor(const Obstacle& obstacle) {
+  return std::visit(
+      Overloaded{
+          [](const PlaneShape& p) -> std::optional<Eigen::Vector3d> { return V(p.point); },
+          [](const BoxShape& b) -> std::optional<Eigen::Vector3d> {
+            return 0.5 * (V(b.min) + V(b.max));
+          },
+          [](const CylinderShape& c) -> std::optional<Eigen::Vector3d> { return V(c.point); },
+          [](const SphereShape& s) -> std::optional<Eigen::Vector3d> { return V(s.center); },
+          [](const MeshShape&) -> std::optional<Eigen::Vector3d> { return std::nullopt; },
+      },
+      obstacle.shape);
+}
+
+Obstacle Translated(const Obstacle& obstacle, const Eigen::Vector3d& by) {
+  Obstacle moved = obstacle;
+  std::visit(Overloaded{
+                 [&](PlaneShape& p) { Add(p.point, by); },
+                 [&](BoxShape& b) {
+                   Add(b.min, by);
+                   Add(b.max, by);
+                 },
+                 [&](CylinderShape& c) { Add(c.point, by); },
+                 [&](SphereShape& s) { Add(s.center, by); },
+                 [](MeshShape&) {},
+             },
+             moved.shape);
+  return moved;
+}
+
+}  // namespace drape

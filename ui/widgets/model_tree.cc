@@ -1,0 +1,131 @@
+#include "ui/widgets/model_tree.h"
+
+#include <QHeaderView>
+
+#include "core/model/overloaded.h"
+#include "core/model/scene.h"
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+namespace {
+
+constexpr int kPartRole = Qt::UserRole, kIndexRole = Qt::UserRole + 1, kMoveRole = Qt::UserRole + 2;
+
+QTreeWidgetItem* Add(QTreeWidgetItem* parent,
+                     const QString& name,
+                     const QString& summary,
+                     ModelTree::Part part,
+                     int index = -1,
+                     int move = -1) {
+  auto* item = new QTreeWidgetItem(parent, {name, summary});
+  item->setData(0, kPartRole, static_cast<int>(part));
+  item->setData(0, kIndexRole, index);
+  item->setData(0, kMoveRole, move);
+  return item;
+}
+
+QString OutlineSummary(const Fabric& f) {
+  return std::visit(
+      Overloaded{[](const RectangleOutline& r) {
+                   return QString("rectangle %1 × %2 m").arg(r.size[0]).arg(r.size[1]);
+                 },
+                 [](const DiskOutline& d) { return QString("disk r = %1 m").arg(d.radius); },
+                 [](const PolygonOutline& p) {
+                   return QString("polygon, %1 vertices").arg(p.vertices.size());
+                 }},
+      f.outline);
+}
+
+}  // namespace
+
+ModelTree::ModelTree(SceneDocument* document, QWidget* parent)
+    : QTreeWidget(parent), document_(document) {
+  setColumnCount(2);
+  setHeaderLabels({"scene", ""});
+  header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+    if (item)
+      emit chosen(static_cast<Part>(item->data(0, kPartRole).toInt()),
+                  item->data(0, kIndexRole).toInt(),
+                  item->data(0, kMoveRole).toInt());
+  });
+  connect(this, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+    emit opened(static_cast<Part>(item->data(0, kPartRole).toInt()),
+                item->data(0, kIndexRole).toInt(),
+                item->data(0, kMoveRole).toInt());
+  });
+  connect(document_, &SceneDocument::changed, this, &ModelTree::refresh);
+  refresh();
+}
+
+QTreeWidgetItem* ModelTree::item(Part part, int index, int move) const {
+  for (int i = 0; i < topLevelItemCount(); ++i) {
+    QTreeWidgetItem* top = topLevelItem(i);
+    if (top->data(0, kPartRole).toInt() != static_cast<int>(part)) continue;
+    if (index < 0) return top;
+    QTreeWidgetItem* child = index < top->childCount() ? top->child(index) : nullptr;
+    if (!child || move < 0) return child;
+    return move < child->childCount() ? child->child(move) : nullptr;
+  }
+  return nullptr;
+}
+
+void ModelTree::refresh() {
+  const Scene& s = document_->scene();
+  const QSignalBlocker block(this);  // rebuilding is not a choice
+  clear();
+  auto* root = invisibleRootItem();
+  Add(root, "Fabric", OutlineSummary(s.fabric), Part::kFabric);
+  Add(root,
+      "Material",
+      QString("h = %1 mm, w = %2 Pa").arg(s.material.thickness * 1e3).arg(s.material.areal_weight),
+      Part::kMaterial);
+  auto* supports = Add(root, "Supports", QString::number(s.supports.size()), Part::kSupports);
+  for (size_t i = 0; i < s.supports.size(); ++i)
+    Add(supports,
+        QString::fromStdString(s.supports[i].name),
+        ToString(s.supports[i].fix),
+        Part::kSupports,
+        static_cast<int>(i));
+  auto* grippers = Add(root, "Grippers", QString::number(s.grippers.size()), Part::kGrippers);
+  for (size_t i = 0; i < s.grippers.size(); ++i)
+    Add(grippers,
+        QString::fromStdString(s.grippers[i].name),
+        ToString(s.grippers[i].hold),
+        Part::kGrippers,
+        static_cast<int>(i));
+  auto* obstacles = Add(root, "Obstacles", QString::number(s.obstacles.size()), Part::kObstacles);
+  for (size_t i = 0; i < s.obstacles.size(); ++i)
+    Add(obstacles,
+        QString::fromStdString(s.obstacles[i].name),
+        {},
+        Part::kObstacles,
+        static_cast<int>(i));
+  auto* stages = Add(root, "Stages", QString::number(s.stages.size()), Part::kStages);
+  for (size_t i = 0; i < s.stages.size(); ++i) {
+    const Stage& st = s.stages[i];
+    auto* stage = Add(stages,
+                      QString::fromStdString(st.name),
+                      QString("%1, Δλ₀ = %2").arg(ToString(st.kind)).arg(st.initial_increment),
+                      Part::kStages,
+                      static_cast<int>(i));
+    for (size_t m = 0; m < st.moves.size(); ++m)
+      Add(stage,
+          QString::fromStdString(st.moves[m].gripper.empty() ? st.moves[m].obstacle
+                                                             : st.moves[m].gripper),
+          "move",
+          Part::kStages,
+          static_cast<int>(i),
+          static_cast<int>(m));
+  }
+  auto* probes = Add(root, "Probes", QString::number(s.probes.size()), Part::kProbes);
+  for (size_t i = 0; i < s.probes.size(); ++i)
+    Add(probes, QString::fromStdString(s.probes[i].name), {}, Part::kProbes, static_cast<int>(i));
+  Add(root,
+      "Solver",
+      QString("tolerance %1, N_p %2").arg(s.solver.tolerance).arg(s.solver.target_iterations),
+      Part::kSolver);
+  expandAll();
+}
+
+}  // namespace drape

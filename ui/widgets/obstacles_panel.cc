@@ -1,0 +1,143 @@
+#include "ui/widgets/obstacles_panel.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+#include "core/io/scene_writer.h"
+#include "core/model/scene.h"
+#include "core/model/scene_error.h"
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+namespace {
+
+// A new obstacle of `kind` just under a part at z = 0 of about 20 cm.
+ObstacleShape DefaultShape(const QString& kind) {
+  if (kind == "block") return BoxShape{{-0.05, -0.05, -0.10}, {0.05, 0.05, -0.01}, 0.005};
+  if (kind == "rod") return CylinderShape{{0, 0, -0.02}, {0, 1, 0}, 0.01, std::nullopt};
+  if (kind == "sphere") return SphereShape{{0, 0, -0.06}, 0.05};
+  return PlaneShape{{0, 0, -0.05}, {0, 0, 1}};
+}
+
+}  // namespace
+
+ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), document_(document) {
+  auto* layout = new QVBoxLayout(this);
+  list_ = new QListWidget(this);
+  layout->addWidget(list_, 1);
+  auto* row = new QHBoxLayout;
+  kind_ = new QComboBox(this);
+  kind_->addItems({"table", "block", "rod", "sphere"});
+  auto* add = new QPushButton("Add", this);
+  auto* remove = new QPushButton("Remove", this);
+  row->addWidget(kind_, 1);
+  row->addWidget(add);
+  row->addWidget(remove);
+  layout->addLayout(row);
+  layout->addWidget(new QLabel("The selected obstacle as the scene file has it (m, or units):"));
+  text_ = new QPlainTextEdit(this);
+  text_->setTabChangesFocus(true);
+  layout->addWidget(text_, 1);
+  auto* apply = new QPushButton("Apply", this);
+  layout->addWidget(apply);
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setStyleSheet("color: #b00020");
+  layout->addWidget(message_);
+  connect(add, &QPushButton::clicked, this, [this] { this->add(kind_->currentText()); });
+  connect(remove, &QPushButton::clicked, this, &ObstaclesPanel::removeSelected);
+  connect(apply, &QPushButton::clicked, this, [this] { applyText(text_->toPlainText()); });
+  connect(list_, &QListWidget::currentRowChanged, this, &ObstaclesPanel::refresh);
+  connect(document_, &SceneDocument::changed, this, &ObstaclesPanel::refresh);
+  refresh();
+}
+
+QString ObstaclesPanel::message() const {
+  return message_->text();
+}
+
+bool ObstaclesPanel::Apply(const QString& what, const Scene& after) {
+  QString problem;
+  const bool done = document_->tryApply(what, after, &problem);
+  message_->setText(problem);
+  return done;
+}
+
+bool ObstaclesPanel::add(const QString& kind) {
+  Scene after = document_->scene();
+  int n = static_cast<int>(after.obstacles.size()) + 1;
+  auto taken = [&](const std::string& name) {
+    return std::any_of(after.obstacles.begin(), after.obstacles.end(), [&](const Obstacle& o) {
+      return o.name == name;
+    });
+  };
+  while (taken(kind.toStdString() + " " + std::to_string(n))) ++n;
+  after.obstacles.push_back({kind.toStdString() + " " + std::to_string(n), DefaultShape(kind)});
+  if (!Apply("add a " + kind, after)) return false;
+  list_->setCurrentRow(list_->count() - 1);
+  return true;
+}
+
+bool ObstaclesPanel::removeSelected() {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  if (i < 0 || i >= static_cast<int>(after.obstacles.size())) return false;
+  const QString name = QString::fromStdString(after.obstacles[i].name);
+  after.obstacles.erase(after.obstacles.begin() + i);
+  return Apply("remove " + name, after);
+}
+
+bool ObstaclesPanel::applyText(const QString& text) {
+  const int i = list_->currentRow();
+  if (i < 0 || i >= static_cast<int>(document_->scene().obstacles.size())) return false;
+  nlohmann::json document = nlohmann::json::parse(SceneToJson(document_->scene()).dump());
+  try {
+    document["obstacles"][i] = nlohmann::json::parse(text.toStdString());
+  } catch (const nlohmann::json::parse_error& e) {
+    message_->setText(QString("not JSON: %1").arg(e.what()));
+    return false;
+  }
+  Scene after;
+  try {
+    after = document_->parse(document);
+  } catch (const SceneError& e) {
+    message_->setText(QString::fromStdString(e.what()));
+    return false;
+  }
+  return Apply("edit " + QString::fromStdString(after.obstacles[i].name), after);
+}
+
+void ObstaclesPanel::refresh() {
+  const Scene& s = document_->scene();
+  const int row = list_->currentRow();
+  {
+    const QSignalBlocker block(list_);  // rebuilding the list is not a selection
+    list_->clear();
+    const auto json = SceneToJson(s);
+    for (size_t k = 0; k < s.obstacles.size(); ++k) {
+      const auto& o = json["obstacles"][k];
+      QString kind = "mesh";
+      for (const char* shape : {"plane", "box", "cylinder", "sphere"})
+        if (o.contains(shape)) kind = shape;
+      list_->addItem(QString("%1 (%2)").arg(QString::fromStdString(s.obstacles[k].name), kind));
+    }
+    if (!s.obstacles.empty())
+      list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.obstacles.size()) - 1));
+  }
+  const int i = list_->currentRow();
+  text_->setPlainText(i >= 0 ? QString::fromStdString(FormatJson(SceneToJson(s)["obstacles"][i]))
+                             : QString());
+  text_->setEnabled(i >= 0);
+  emit obstacleSelected(i);
+}
+
+}  // namespace drape

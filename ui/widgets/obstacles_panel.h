@@ -1,0 +1,51 @@
+// The rigid obstacles of a scene: add a table, block, rod or sphere, edit
+// one as the scene file writes it (JSON, units allowed: "5 cm"), remove
+// one. The text is read by the scene reader, so a wrong key or value gets
+// the reader's message naming it. The selected obstacle also gets a handle
+// in the viewport to move it (MainWindow).
+#pragma once
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QPlainTextEdit;
+
+namespace drape {
+
+class SceneDocument;
+struct Scene;
+
+class ObstaclesPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ObstaclesPanel(SceneDocument* document, QWidget* parent = nullptr);
+
+  QListWidget* list() const { return list_; }
+  QPlainTextEdit* text() const { return text_; }
+  QString message() const;
+
+  // kind: "table", "block", "rod" or "sphere", placed under the part.
+  bool add(const QString& kind);
+  bool removeSelected();
+  // The selected obstacle from its JSON text.
+  bool applyText(const QString& json);
+
+ public slots:
+  void refresh();
+
+ signals:
+  void obstacleSelected(int index);  // -1: none
+
+ private:
+  bool Apply(const QString& what, const Scene& after);
+
+  SceneDocument* document_;
+  QListWidget* list_;
+  QComboBox* kind_;
+  QPlainTextEdit* text_;
+  QLabel* message_;
+};
+
+}  // namespace drape

@@ -1,0 +1,112 @@
+#include "ui/widgets/probes_panel.h"
+
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+#include "core/model/scene.h"
+#include "core/model/units.h"
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+
+ProbesPanel::ProbesPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), document_(document) {
+  auto* layout = new QVBoxLayout(this);
+  list_ = new QListWidget(this);
+  layout->addWidget(list_, 1);
+  auto* form = new QFormLayout;
+  at_ = new QLineEdit(this);
+  at_->setPlaceholderText("x, y (e.g. 5 cm, 0)");
+  form->addRow("at (reference)", at_);
+  layout->addLayout(form);
+  auto* row = new QHBoxLayout;
+  auto* add = new QPushButton("Add", this);
+  auto* add_picked = new QPushButton("Add at picked node", this);
+  auto* remove = new QPushButton("Remove", this);
+  row->addWidget(add);
+  row->addWidget(add_picked);
+  row->addWidget(remove);
+  layout->addLayout(row);
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setStyleSheet("color: #b00020");
+  layout->addWidget(message_);
+  connect(add, &QPushButton::clicked, this, [this] {
+    const QStringList parts = at_->text().split(',');
+    try {
+      if (parts.size() != 2) throw UnitError("give two coordinates, x, y");
+      this->add(ParseQuantityAs(parts[0].trimmed().toStdString(), dim::kLength),
+                ParseQuantityAs(parts[1].trimmed().toStdString(), dim::kLength));
+    } catch (const UnitError& e) {
+      message_->setText(QString("at: %1").arg(e.what()));
+    }
+  });
+  connect(add_picked, &QPushButton::clicked, this, [this] {
+    if (picked_.empty())
+      message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
+    else
+      this->add(picked_.back()[0], picked_.back()[1]);
+  });
+  connect(remove, &QPushButton::clicked, this, &ProbesPanel::removeSelected);
+  connect(document_, &SceneDocument::changed, this, &ProbesPanel::refresh);
+  refresh();
+}
+
+QString ProbesPanel::message() const {
+  return message_->text();
+}
+
+void ProbesPanel::setPicked(const std::vector<std::array<double, 2>>& at) {
+  picked_ = at;
+}
+
+bool ProbesPanel::Apply(const QString& what, const Scene& after) {
+  QString problem;
+  const bool done = document_->tryApply(what, after, &problem);
+  message_->setText(problem);
+  return done;
+}
+
+bool ProbesPanel::add(double x, double y) {
+  Scene after = document_->scene();
+  int n = static_cast<int>(after.probes.size()) + 1;
+  auto taken = [&](const std::string& name) {
+    return std::any_of(
+        after.probes.begin(), after.probes.end(), [&](const Probe& p) { return p.name == name; });
+  };
+  while (taken("probe " + std::to_string(n))) ++n;
+  after.probes.push_back({"probe " + std::to_string(n), {x, y}});
+  if (!Apply(QString("add a probe at (%1, %2) m").arg(x).arg(y), after)) return false;
+  list_->setCurrentRow(list_->count() - 1);
+  return true;
+}
+
+bool ProbesPanel::removeSelected() {
+  const int i = list_->currentRow();
+  Scene after = document_->scene();
+  if (i < 0 || i >= static_cast<int>(after.probes.size())) return false;
+  const QString name = QString::fromStdString(after.probes[i].name);
+  after.probes.erase(after.probes.begin() + i);
+  return Apply("remove " + name, after);
+}
+
+void ProbesPanel::refresh() {
+  const Scene& s = document_->scene();
+  const int row = list_->currentRow();
+  const QSignalBlocker block(list_);
+  list_->clear();
+  for (const Probe& p : s.probes)
+    list_->addItem(
+        QString("%1 at (%2, %3) m").arg(QString::fromStdString(p.name)).arg(p.at[0]).arg(p.at[1]));
+  if (!s.probes.empty())
+    list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.probes.size()) - 1));
+}
+
+}  // namespace drape

@@ -1,0 +1,48 @@
+// The probes of a scene: named points of the part (reference x, y) whose
+// positions each step reports and the probe plot draws. Add one at typed
+// coordinates or at the node picked in the viewport; remove one. Checked by
+// the reader's and the engine's rules (a probe off the part is refused).
+#pragma once
+
+#include <QWidget>
+
+#include <array>
+#include <vector>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+
+namespace drape {
+
+class SceneDocument;
+struct Scene;
+
+class ProbesPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ProbesPanel(SceneDocument* document, QWidget* parent = nullptr);
+
+  QListWidget* list() const { return list_; }
+  QString message() const;
+
+  // A probe at reference (x, y) [m].
+  bool add(double x, double y);
+  bool removeSelected();
+
+ public slots:
+  void refresh();
+  // Reference positions of the picked nodes: "Add at picked" uses the last.
+  void setPicked(const std::vector<std::array<double, 2>>& at);
+
+ private:
+  bool Apply(const QString& what, const Scene& after);
+
+  SceneDocument* document_;
+  QListWidget* list_;
+  QLineEdit* at_;
+  QLabel* message_;
+  std::vector<std::array<double, 2>> picked_;
+};
+
+}  // namespace drape
