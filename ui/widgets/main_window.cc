@@ -843,16 +843,25 @@ void MainWindow::stop() {
   if (running_ && worker_) worker_->stop();
 }
 
+// Every step is kept and plotted; the view draws only the newest of the
+// steps that arrived together (one draw after the queued ones are taken).
 void MainWindow::onStep(std::shared_ptr<const StepState> step) {
+  if (worker_) worker_->consumed();
   plot_->add(*step);
   probe_plot_->add(*step);
   residual_plot_->add(*step);
   steps_.push_back(std::move(step));
   const QSignalBlocker block(timeline_);
   timeline_->setRange(0, stepCount());
-  if (follow_) {
-    timeline_->setValue(stepCount());
-    showStep(stepCount());
+  if (follow_ && !draw_pending_) {
+    draw_pending_ = true;
+    QTimer::singleShot(0, this, [this] {
+      draw_pending_ = false;
+      if (!follow_) return;
+      const QSignalBlocker block(timeline_);
+      timeline_->setValue(stepCount());
+      showStep(stepCount());
+    });
   }
 }
 

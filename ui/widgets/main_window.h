@@ -168,6 +168,7 @@ class MainWindow : public QMainWindow {
   QThread* thread_ = nullptr;
   SolverWorker* worker_ = nullptr;
   bool running_ = false, paused_ = false, follow_ = true;
+  bool draw_pending_ = false;  // the newest step is to be drawn
 };
 
 }  // namespace drape

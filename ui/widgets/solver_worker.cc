@@ -30,9 +30,22 @@ void SolverWorker::step() {
 
 void SolverWorker::stop() {
   cancel_.Cancel();  // also ends a pause
+  std::lock_guard lock(mutex_);
+  room_.notify_all();  // and a wait for room in the queue
+}
+
+void SolverWorker::consumed() {
+  std::lock_guard lock(mutex_);
+  --queued_;
+  room_.notify_all();
 }
 
 StepDecision SolverWorker::Observe(const StepState& step) {
+  {
+    std::unique_lock lock(mutex_);
+    room_.wait(lock, [&] { return queued_ < kQueueLength || cancel_.IsCancelled(); });
+    ++queued_;
+  }
   emit stepConverged(std::make_shared<const StepState>(step));
   std::lock_guard lock(mutex_);
   if (paused_ && steps_allowed_ > 0 && --steps_allowed_ == 0) cancel_.Pause();

@@ -1,11 +1,15 @@
 // The solver on a worker thread: core's ShellSolver, driven through its
 // observer and cancellation token, with every converged step sent to the
 // GUI thread as a queued signal (none lost: the timeline keeps them all).
+// The queue is bounded: when the GUI thread has kQueueLength steps not yet
+// taken (consumed()), the solver waits, so a fast solver cannot bury the
+// GUI in events.
 #pragma once
 
 #include <QObject>
 
 #include <atomic>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 
@@ -25,6 +29,10 @@ class SolverWorker : public QObject {
   void resume();
   void step();  // while paused: let one more step through
   void stop();  // steps so far are kept
+  // The GUI thread has taken one step off the queue.
+  void consumed();
+
+  static constexpr int kQueueLength = 32;
 
  public slots:
   // Runs the whole scene; emits stepConverged per step, then finished.
@@ -40,6 +48,8 @@ class SolverWorker : public QObject {
 
   CancellationToken cancel_;  // stops and pauses the solver
   std::mutex mutex_;
+  std::condition_variable room_;  // in the queue
+  int queued_ = 0;                // steps sent, not yet consumed
   bool paused_ = false;
   int steps_allowed_ = 0;  // while paused
 };
