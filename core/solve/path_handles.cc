@@ -37,6 +37,13 @@ double AngleAbout(const Eigen::Vector3d& axis,
   return angle;
 }
 
+// How far an arc's axis handle sits from the centre: as far as the held
+// point (so it is drawn at the scale of the motion), 5 cm when that is 0.
+double AxisLength(const Eigen::Vector3d& center, const Eigen::Vector3d& start) {
+  const double r = (start - center).norm();
+  return r > 0 ? r : 0.05;
+}
+
 }  // namespace
 
 std::vector<GripperMove> GripperMoves(const Scene& scene, const ShellModel& model) {
@@ -76,7 +83,10 @@ std::vector<Eigen::Vector3d> PathHandlePoints(const Path& path, const Eigen::Vec
       Overloaded{
           [&](const LinePath& p) { return std::vector<Eigen::Vector3d>{start + V(p.by)}; },
           [&](const ArcPath& p) {
-            return std::vector<Eigen::Vector3d>{V(p.center), MotionAt(p, 1.0).Apply(start)};
+            const Eigen::Vector3d c = V(p.center);
+            return std::vector<Eigen::Vector3d>{c,
+                                                MotionAt(p, 1.0).Apply(start),
+                                                c + AxisLength(c, start) * V(p.axis).normalized()};
           },
           [&](const KeyframesPath& p) {
             std::vector<Eigen::Vector3d> points;
@@ -98,12 +108,15 @@ Path MovePathHandle(const Path& path,
                           return p;
                         },
                         [&](ArcPath p) -> Path {
-                          CheckHandle(handle, 2);
+                          CheckHandle(handle, 3);
+                          const Eigen::Vector3d c = V(p.center);
                           if (handle == 0) {
                             p.center = A(to);
-                          } else {
-                            const Eigen::Vector3d c = V(p.center);
+                          } else if (handle == 1) {
                             p.angle_deg = AngleAbout(V(p.axis), start - c, to - c, p.angle_deg);
+                          } else if ((to - c).norm() > 1e-9 * AxisLength(c, start)) {
+                            // (A tip dropped on the centre has no direction.)
+                            p.axis = A((to - c).normalized());
                           }
                           return p;
                         },

@@ -2,7 +2,8 @@
 // from dragging one. Every handle is a point in space:
 //  line       0: where the held point ends (start + by)
 //  arc        0: the centre; 1: where the held point ends (sets the angle
-//             about the unchanged axis)
+//             about the unchanged axis); 2: the axis' tip, centre + L·axis
+//             with L the start's distance from the centre (sets the axis)
 //  keyframes  k: the k-th keyframe (start + pₖ)
 // `start` is where the held point (a gripper's centroid) is when the stage
 // begins.

@@ -28,14 +28,27 @@ TEST(PathHandles, LineEndIsWhereTheHeldPointArrives) {
   EXPECT_THROW(MovePathHandle(line, start, 1, to), std::out_of_range);
 }
 
-TEST(PathHandles, ArcHasItsCentreAndItsEnd) {
+TEST(PathHandles, ArcHasItsCentreItsEndAndItsAxis) {
   // A quarter turn about z through the origin takes (1, 0, 0) to (0, 1, 0).
   const Eigen::Vector3d start(1, 0, 0);
   const Path arc = ArcPath{{0, 0, 0}, {0, 0, 1}, 90.0};
   const auto handles = PathHandlePoints(arc, start);
-  ASSERT_EQ(handles.size(), 2u);
+  ASSERT_EQ(handles.size(), 3u);
   EXPECT_LT(handles[0].norm(), 1e-15);
   EXPECT_LT((handles[1] - Eigen::Vector3d(0, 1, 0)).norm(), 1e-15);
+  // The axis' tip, as far from the centre as the start is.
+  EXPECT_LT((handles[2] - Eigen::Vector3d(0, 0, 1)).norm(), 1e-15);
+
+  // Tipped over to x, the axis now is x: a quarter turn about x leaves the
+  // start, which lies on it, where it was.
+  const auto tipped = std::get<ArcPath>(MovePathHandle(arc, start, 2, {3, 0, 0}));
+  EXPECT_EQ(tipped.axis, (Vec3{1, 0, 0}));
+  EXPECT_LT((End(tipped, start) - start).norm(), 1e-15);
+  // About −y the start goes over the top: (1, 0, 0) → (0, 0, 1).
+  const auto over = std::get<ArcPath>(MovePathHandle(arc, start, 2, {0, -0.5, 0}));
+  EXPECT_LT((End(over, start) - Eigen::Vector3d(0, 0, 1)).norm(), 1e-15);
+  // Dropped on the centre the tip has no direction: nothing changes.
+  EXPECT_EQ(MovePathHandle(arc, start, 2, {0, 0, 0}), arc);
 
   // The centre moves; axis and angle stay.
   const auto centred = std::get<ArcPath>(MovePathHandle(arc, start, 0, {0.5, 0, 0}));

@@ -80,11 +80,11 @@ TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
   SceneDocument* doc = window.document();
   const Scene original = doc->scene();
   // The fold stage R's move, chosen in the scene tree: the stages editor
-  // comes up and the arc gets a centre and an end handle.
+  // comes up and the arc gets its handles.
   window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kStages, 1, 0));
   ASSERT_EQ(window.stages()->list()->currentRow(), 1);
   PathHandles* handles = window.pathHandles();
-  ASSERT_EQ(handles->count(), 2);
+  ASSERT_EQ(handles->count(), 3);  // centre, end, axis
   const Eigen::Vector3d start(-0.1, 0, 0);  // the left edge's centroid
   const Eigen::Vector3d c = handles->position(0);
   EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.02345e-2)).norm(), 1e-12);
