@@ -12,23 +12,30 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <QDockWidget>
 #include <QLabel>
 #include <QListWidget>
 #include <QMouseEvent>
+#include <QPlainTextEdit>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
 
 #include "core/io/scene_reader.h"
+#include "core/model/obstacle_anchor.h"
 #include "core/solve/path_handles.h"
 #include "core/solve/prescribed_motion.h"
 #include "core/solve/shell_model.h"
 #include "support/test_paths.h"
+#include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
+#include "ui/widgets/obstacles_panel.h"
 #include "ui/widgets/path_handles.h"
+#include "ui/widgets/probe_plot.h"
+#include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
@@ -84,7 +91,7 @@ TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
   window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kStages, 1, 0));
   ASSERT_EQ(window.stages()->list()->currentRow(), 1);
   PathHandles* handles = window.pathHandles();
-  ASSERT_EQ(handles->count(), 3);  // centre, end, axis
+  ASSERT_EQ(handles->count(), 3);           // centre, end, axis
   const Eigen::Vector3d start(-0.1, 0, 0);  // the left edge's centroid
   const Eigen::Vector3d c = handles->position(0);
   EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.02345e-2)).norm(), 1e-12);
@@ -319,6 +326,116 @@ TEST_F(Widgets, OutlinesAreEditedAsRectangleDiskOrPolygon) {
   QUndoStack* undo = doc->undoStack();
   while (undo->canUndo()) undo->undo();
   EXPECT_EQ(doc->scene(), original);
+}
+
+TEST_F(Widgets, ObstaclesAreAddedEditedAsJsonAndDraggedInTheView) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  ObstaclesPanel* panel = window.obstacles();
+  const Scene original = doc->scene();
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kObstacles));
+  ASSERT_TRUE(panel->add("sphere")) << panel->message().toStdString();
+  ASSERT_EQ(doc->scene().obstacles.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<SphereShape>(doc->scene().obstacles[1].shape));
+
+  // Edited as the scene file writes it, with units.
+  ASSERT_TRUE(panel->applyText(
+      R"({"name": "ball", "sphere": {"center": [0, 0, "-4 cm"], "radius": "3 cm"}})"))
+      << panel->message().toStdString();
+  const auto& ball = std::get<SphereShape>(doc->scene().obstacles[1].shape);
+  EXPECT_DOUBLE_EQ(ball.radius, 0.03);
+  EXPECT_DOUBLE_EQ(ball.center[2], -0.04);
+  EXPECT_EQ(doc->scene().obstacles[1].name, "ball");
+  // Wrong text: not JSON, or a value the reader refuses; nothing changes.
+  const Scene before = doc->scene();
+  EXPECT_FALSE(panel->applyText(R"({"name": "ball", "sphere": )"));
+  EXPECT_NE(panel->message().toStdString().find("not JSON"), std::string::npos);
+  EXPECT_FALSE(panel->applyText(R"({"name": "ball", "sphere": {"center": [0, 0], "radius": 1}})"));
+  EXPECT_NE(panel->message().toStdString().find("obstacles[1]"), std::string::npos)
+      << panel->message().toStdString();
+  EXPECT_EQ(doc->scene(), before);
+
+  // Its handle sits at the centre; dragged, the ball moves with it.
+  QTest::qWait(200);
+  DragHandles* handle = window.obstacleHandles();
+  ASSERT_EQ(handle->count(), 1);
+  EXPECT_LT((handle->position(0) - Eigen::Vector3d(0, 0, -0.04)).norm(), 1e-15);
+  const QPoint from = OnScreen(window.viewport(), handle->position(0));
+  Drag(window.viewport(), from, from + QPoint(50, -30));
+  const Eigen::Vector3d dropped = handle->position(0);
+  EXPECT_GT((dropped - Eigen::Vector3d(0, 0, -0.04)).norm(), 1e-3) << "the drag did not move it";
+  QTest::qWait(50);
+  EXPECT_LT((*ObstacleAnchor(doc->scene().obstacles[1]) - dropped).norm(), 1e-15);
+  EXPECT_DOUBLE_EQ(std::get<SphereShape>(doc->scene().obstacles[1].shape).radius, 0.03);
+
+  // Removing the table a stage does not move: allowed, and undone.
+  panel->list()->setCurrentRow(0);
+  ASSERT_TRUE(panel->removeSelected()) << panel->message().toStdString();
+  EXPECT_EQ(doc->scene().obstacles.size(), 1u);
+  QUndoStack* undo = doc->undoStack();
+  while (undo->canUndo()) undo->undo();
+  EXPECT_EQ(doc->scene(), original);
+}
+
+TEST_F(Widgets, ProbesAreAddedAndPlottedDuringARun) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  ProbesPanel* probes = window.probes();
+  const size_t before = doc->scene().probes.size();
+  ASSERT_TRUE(probes->add(0.05, 0.0)) << probes->message().toStdString();
+  ASSERT_EQ(doc->scene().probes.size(), before + 1);
+  EXPECT_EQ(doc->scene().probes.back().at, (Vec2{0.05, 0.0}));
+  // Off the 20 × 2 cm strip: the engine's message.
+  EXPECT_FALSE(probes->add(0.5, 0.0));
+  EXPECT_NE(probes->message().toStdString().find("outside the fabric"), std::string::npos)
+      << probes->message().toStdString();
+  EXPECT_EQ(doc->scene().probes.size(), before + 1);
+
+  QSignalSpy finished(&window, &MainWindow::runFinished);
+  window.run();
+  ASSERT_TRUE(finished.wait(60000));
+  QTest::qWait(50);
+  const int steps = window.stepCount();
+  // One point per step for every probe; the last is the last step's.
+  for (int p = 0; p < static_cast<int>(before + 1); ++p)
+    EXPECT_EQ(window.probePlot()->points(p), steps);
+  const auto& last = window.step(steps);
+  ASSERT_EQ(last.probes.size(), before + 1);
+  EXPECT_EQ(window.probePlot()->lastHeight(static_cast<int>(before)), last.probes.back().value.z());
+  // Folded in half, the point 5 cm right of the middle lies on the table.
+  EXPECT_NEAR(last.probes.back().value.z(), 0.0, 2e-3);
+  EXPECT_EQ(window.residualPlot()->points(), static_cast<int>(last.residuals.size()));
+}
+
+TEST_F(Widgets, TheSceneTreeBringsUpEachPartsEditor) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  ModelTree* tree = window.tree();
+  const Scene& scene = window.document()->scene();
+  EXPECT_EQ(tree->item(ModelTree::Part::kStages)->childCount(),
+            static_cast<int>(scene.stages.size()));
+  EXPECT_EQ(tree->item(ModelTree::Part::kStages, 1)->childCount(), 1);  // R's move
+  EXPECT_EQ(tree->item(ModelTree::Part::kGrippers, 0)->text(0).toStdString(), "end");
+  tree->setCurrentItem(tree->item(ModelTree::Part::kGrippers, 0));
+  QTest::qWait(20);
+  EXPECT_TRUE(window.grippers()->isVisible());
+  EXPECT_EQ(window.grippers()->list()->currentRow(), 0);
+  tree->setCurrentItem(tree->item(ModelTree::Part::kStages, 2));
+  QTest::qWait(20);
+  EXPECT_TRUE(window.stages()->isVisible());
+  EXPECT_EQ(window.stages()->list()->currentRow(), 2);
+  // Edits show in the tree.
+  ASSERT_TRUE(window.stages()->addStage("hold"));
+  EXPECT_EQ(tree->item(ModelTree::Part::kStages)->childCount(),
+            static_cast<int>(scene.stages.size()));
 }
 
 }  // namespace
