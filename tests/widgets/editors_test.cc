@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -436,6 +437,29 @@ TEST_F(Widgets, TheSceneTreeBringsUpEachPartsEditor) {
   ASSERT_TRUE(window.stages()->addStage("hold"));
   EXPECT_EQ(tree->item(ModelTree::Part::kStages)->childCount(),
             static_cast<int>(scene.stages.size()));
+}
+
+TEST_F(Widgets, CameraViewsLookWhereTheirNamesSay) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  auto direction = [&] {
+    double d[3];
+    window.viewport()
+        ->renderWindow()
+        ->GetRenderers()
+        ->GetFirstRenderer()
+        ->GetActiveCamera()
+        ->GetDirectionOfProjection(d);
+    return Eigen::Vector3d(d[0], d[1], d[2]);
+  };
+  ASSERT_TRUE(window.setCamera("top"));
+  EXPECT_LT((direction() - Eigen::Vector3d(0, 0, -1)).norm(), 1e-9);
+  ASSERT_TRUE(window.setCamera("front"));
+  EXPECT_NEAR(direction().z(), 0.0, 1e-9);  // level
+  EXPECT_FALSE(window.setCamera("below"));
+  EXPECT_EQ(window.viewport()->renderWindow()->GetRenderers()->GetNumberOfItems(), 1);
 }
 
 }  // namespace

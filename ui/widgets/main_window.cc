@@ -400,6 +400,16 @@ void MainWindow::buildActions() {
   view->addAction("&Last step", this, [this] { showStep(stepCount()); })
       ->setShortcut(Qt::ALT | Qt::Key_End);
   view->addAction("P&lay", this, &MainWindow::play)->setShortcut(Qt::CTRL | Qt::Key_Space);
+  view->addSeparator();
+  // The camera fitted to the run again, from a direction of `drape render`.
+  const std::pair<const char*, Qt::Key> cameras[] = {
+      {"iso", Qt::Key_1}, {"front", Qt::Key_2}, {"top", Qt::Key_3}, {"side", Qt::Key_4}};
+  for (const auto& [name, key] : cameras)
+    view->addAction(
+            QString("Camera &%1").arg(name),
+            this,
+            [this, camera = std::string(name)] { setCamera(QString::fromStdString(camera)); })
+        ->setShortcut(Qt::CTRL | key);
   QAction* export_vtu = bar->addAction("Export VTU…", this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, "Export the run as VTU into");
     QString error;
@@ -627,6 +637,16 @@ void MainWindow::updateMarkers() {
 
 int MainWindow::currentStep() const {
   return timeline_->value();
+}
+
+bool MainWindow::setCamera(const QString& view) {
+  if (!QStringList{"iso", "front", "top", "side"}.contains(view)) return false;
+  view_.camera = CameraSpec{};
+  view_.camera.view = view.toStdString();
+  if (!model_) return true;
+  rebuildRenderer();
+  showStep(currentStep());
+  return true;
 }
 
 bool MainWindow::setField(const QString& name) {

@@ -88,6 +88,9 @@ class MainWindow : public QMainWindow {
 
   // The colour field ("" for none, else a name of Fields()).
   bool setField(const QString& name);
+  // The camera fitted to the run from "iso", "front", "top" or "side" (as
+  // `drape render --camera`); also how to get the view back after turning it.
+  bool setCamera(const QString& view);
   // The shown step as a PNG of the view's size, drawn by the offscreen
   // renderer (the same builder); false with a message on failure.
   bool exportImage(const QString& file, QString* error = nullptr);
