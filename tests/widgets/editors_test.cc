@@ -372,6 +372,14 @@ TEST_F(Widgets, ObstaclesAreAddedEditedAsJsonAndDraggedInTheView) {
   EXPECT_LT((*ObstacleAnchor(doc->scene().obstacles[1]) - dropped).norm(), 1e-15);
   EXPECT_DOUBLE_EQ(std::get<SphereShape>(doc->scene().obstacles[1].shape).radius, 0.03);
 
+  // The handle is there while the obstacles' editor is.
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kFabric));
+  QTest::qWait(50);
+  EXPECT_EQ(handle->count(), 0);
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kObstacles, 1));
+  QTest::qWait(50);
+  EXPECT_EQ(handle->count(), 1);
+
   // Removing the table a stage does not move: allowed, and undone.
   panel->list()->setCurrentRow(0);
   ASSERT_TRUE(panel->removeSelected()) << panel->message().toStdString();

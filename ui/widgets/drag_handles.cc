@@ -26,14 +26,18 @@ void DragHandles::clear() {
   renderer_ = nullptr;
 }
 
-void DragHandles::show(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points) {
+void DragHandles::show(vtkRenderer* renderer,
+                       const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<Eigen::Vector3d>& colours) {
   clear();
   renderer_ = renderer;
-  for (const Eigen::Vector3d& p : points) {
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d& p = points[i];
+    const Eigen::Vector3d colour = i < colours.size() ? colours[i] : Eigen::Vector3d(1, 0.55, 0);
     Handle h{vtkSmartPointer<vtkHandleWidget>::New(),
              vtkSmartPointer<vtkSphereHandleRepresentation>::New()};
     h.representation->SetHandleSize(18);  // pixels: the same size at any zoom
-    h.representation->GetProperty()->SetColor(1.0, 0.55, 0.0);
+    h.representation->GetProperty()->SetColor(colour.x(), colour.y(), colour.z());
     h.representation->GetSelectedProperty()->SetColor(1.0, 0.9, 0.2);
     double at[3] = {p.x(), p.y(), p.z()};
     h.representation->SetWorldPosition(at);

@@ -24,8 +24,11 @@ class DragHandles : public QObject {
   explicit DragHandles(vtkRenderWindowInteractor* interactor, QObject* parent = nullptr);
   ~DragHandles() override;
 
-  // One handle per point in `renderer` (replacing any shown before).
-  void show(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points);
+  // One handle per point in `renderer` (replacing any shown before), in
+  // the colour of the same index (RGB in [0, 1]; orange when not given).
+  void show(vtkRenderer* renderer,
+            const std::vector<Eigen::Vector3d>& points,
+            const std::vector<Eigen::Vector3d>& colours = {});
   void clear();
   int count() const { return static_cast<int>(handles_.size()); }
   vtkRenderer* renderer() const;

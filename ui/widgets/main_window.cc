@@ -133,10 +133,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   resizeDocks({tree_dock, properties_dock}, {220, 700}, Qt::Vertical);
   // Handles show while their editor is up: a path's with the stages, an
   // obstacle's with the obstacles.
-  for (QDockWidget* d : {stages_dock, obstacles_dock})
-    connect(d, &QDockWidget::visibilityChanged, this, [this] { updateHandles(); });
-  stages_dock_ = stages_dock;
-  obstacles_dock_ = obstacles_dock;
+  // (A dock tabbed behind another still says isVisible(); the signal says
+  // when its tab is selected or unselected.)
+  connect(stages_dock, &QDockWidget::visibilityChanged, this, [this](bool shown) {
+    stages_shown_ = shown;
+    updateHandles();
+  });
+  connect(obstacles_dock, &QDockWidget::visibilityChanged, this, [this](bool shown) {
+    obstacles_shown_ = shown;
+    updateHandles();
+  });
   plot_ = new RunPlot(this);
   auto* plot_dock = new QDockWidget("Run", this);
   plot_dock->setObjectName("Run");
@@ -544,11 +550,11 @@ void MainWindow::updateHandles() {
   obstacle_handles_->clear();
   viewport_->requestRender();
   if (running_ || !renderer_) return;
-  if (stages_dock_->isVisible())
+  if (stages_shown_)
     for (const GripperMove& m : GripperMoves(scene_, *model_))
       if (m.stage == handle_stage_ && m.move == handle_move_)
         handles_->show(renderer_->renderer(), scene_.stages[m.stage].moves[m.move].path, m.start);
-  if (obstacles_dock_->isVisible() && handle_obstacle_ >= 0 &&
+  if (obstacles_shown_ && handle_obstacle_ >= 0 &&
       handle_obstacle_ < static_cast<int>(scene_.obstacles.size()))
     if (const auto anchor = ObstacleAnchor(scene_.obstacles[handle_obstacle_]))
       obstacle_handles_->show(renderer_->renderer(), {*anchor});

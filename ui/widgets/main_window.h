@@ -152,8 +152,8 @@ class MainWindow : public QMainWindow {
   ModelTree* tree_ = nullptr;
   ProbePlot* probe_plot_ = nullptr;
   ResidualPlot* residual_plot_ = nullptr;
-  std::vector<QDockWidget*> editor_docks_;  // by ModelTree::Part
-  QDockWidget *stages_dock_ = nullptr, *obstacles_dock_ = nullptr;
+  std::vector<QDockWidget*> editor_docks_;               // by ModelTree::Part
+  bool stages_shown_ = false, obstacles_shown_ = false;  // their docks' tabs are up
   PathHandles* handles_ = nullptr;
   DragHandles* obstacle_handles_ = nullptr;
   int handle_obstacle_ = -1;                  // the obstacle with a handle

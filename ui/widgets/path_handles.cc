@@ -55,7 +55,13 @@ void PathHandles::show(vtkRenderer* renderer, const Path& path, const Eigen::Vec
   clear();
   path_ = dragged_from_ = path;
   start_ = start;
-  handles_->show(renderer, PathHandlePoints(path, start));
+  // An arc's axis handle is blue, like the axis drawn to it.
+  const Eigen::Vector3d orange(1, 0.55, 0), blue(0.15, 0.45, 0.95);
+  handles_->show(renderer,
+                 PathHandlePoints(path, start),
+                 std::holds_alternative<ArcPath>(path)
+                     ? std::vector<Eigen::Vector3d>{orange, orange, blue}
+                     : std::vector<Eigen::Vector3d>{});
   renderer->AddActor(preview_);
   UpdatePreview();
 }
@@ -76,6 +82,13 @@ void PathHandles::UpdatePreview() {
   lines->InsertNextCell(static_cast<vtkIdType>(samples.size()));
   for (const Eigen::Vector3d& p : samples)
     lines->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
+  if (std::holds_alternative<ArcPath>(path_)) {
+    // The axis: from the centre to its handle.
+    const auto handles = PathHandlePoints(path_, start_);
+    lines->InsertNextCell(2);
+    for (const Eigen::Vector3d& p : {handles[0], handles[2]})
+      lines->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
+  }
   line_->SetPoints(points);
   line_->SetLines(lines);
   line_->Modified();
