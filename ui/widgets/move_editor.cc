@@ -14,23 +14,10 @@
 #include "core/model/overloaded.h"
 #include "core/model/scene_error.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/typed_json.h"
 
 namespace drape {
 namespace {
-
-// "0.5" is a number (SI), "5 cm" a quantity the reader converts.
-nlohmann::json Component(const QString& text) {
-  bool number = false;
-  const double v = text.trimmed().toDouble(&number);
-  if (number) return v;
-  return text.trimmed().toStdString();
-}
-
-nlohmann::json Vector(const QString& text) {
-  nlohmann::json v = nlohmann::json::array();
-  for (const QString& part : text.split(',')) v.push_back(Component(part));
-  return v;
-}
 
 QString Text(const Vec3& v) {
   return QString("%1, %2, %3").arg(v[0]).arg(v[1]).arg(v[2]);
@@ -171,15 +158,14 @@ bool MoveEditor::setPath(const QString& kind,
     return false;
   nlohmann::json path;
   if (kind == "line") {
-    path["line"] = {{"by", Vector(first)}};
+    path["line"] = {{"by", TypedList(first)}};
   } else if (kind == "arc") {
-    path["arc"] = {
-        {"center", Vector(first)}, {"axis", Vector(second)}, {"angle_deg", Component(third)}};
+    path["arc"] = {{"center", TypedList(first)},
+                   {"axis", TypedList(second)},
+                   {"angle_deg", TypedQuantity(third)}};
   } else if (kind == "keyframes") {
-    nlohmann::json points = nlohmann::json::array();
-    for (const QString& p : first.split(';', Qt::SkipEmptyParts)) points.push_back(Vector(p));
     path["keyframes"] = {
-        {"points", points},
+        {"points", TypedLists(first)},
         {"interpolation", second.trimmed().isEmpty() ? "linear" : second.trimmed().toStdString()}};
   } else {
     return false;

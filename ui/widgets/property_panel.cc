@@ -17,6 +17,7 @@
 #include "core/model/overloaded.h"
 #include "core/model/scene_error.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/typed_json.h"
 
 namespace drape {
 
@@ -83,20 +84,6 @@ QString Positive(double v) {
 QString NonNegative(double v) {
   return v >= 0 && std::isfinite(v) ? QString() : "must be ≥ 0";
 }
-// "0.5" is a number (SI), "5 cm" a quantity the scene reader converts.
-nlohmann::json Component(const QString& text) {
-  bool number = false;
-  const double v = text.trimmed().toDouble(&number);
-  if (number) return v;
-  return text.trimmed().toStdString();
-}
-
-nlohmann::json Pair(const QString& text) {
-  nlohmann::json v = nlohmann::json::array();
-  for (const QString& part : text.split(',')) v.push_back(Component(part));
-  return v;
-}
-
 QString Text(const Vec2& v) {
   return QString("%1, %2").arg(v[0]).arg(v[1]);
 }
@@ -253,13 +240,11 @@ bool PropertyPanel::setOutline(const QString& shape, const QString& extent, cons
   nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
   nlohmann::json outline;
   if (shape == "rectangle") {
-    outline["rectangle"] = {{"size", Pair(extent)}, {"center", Pair(center)}};
+    outline["rectangle"] = {{"size", TypedList(extent)}, {"center", TypedList(center)}};
   } else if (shape == "disk") {
-    outline["disk"] = {{"radius", Component(extent)}, {"center", Pair(center)}};
+    outline["disk"] = {{"radius", TypedQuantity(extent)}, {"center", TypedList(center)}};
   } else if (shape == "polygon") {
-    nlohmann::json vertices = nlohmann::json::array();
-    for (const QString& v : extent.split(';', Qt::SkipEmptyParts)) vertices.push_back(Pair(v));
-    outline["polygon"] = vertices;
+    outline["polygon"] = TypedLists(extent);
   } else {
     return false;
   }
@@ -277,7 +262,7 @@ bool PropertyPanel::setOutline(const QString& shape, const QString& extent, cons
 
 bool PropertyPanel::setElementSize(const QString& size) {
   nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
-  fabric["mesh"] = {{"size", Component(size)}};
+  fabric["mesh"] = {{"size", TypedQuantity(size)}};
   return ApplyFabric("element size " + size, fabric);
 }
 

@@ -1,0 +1,26 @@
+#include "ui/widgets/typed_json.h"
+
+#include <QStringList>
+
+namespace drape {
+
+nlohmann::json TypedQuantity(const QString& text) {
+  bool number = false;
+  const double v = text.trimmed().toDouble(&number);
+  if (number) return v;
+  return text.trimmed().toStdString();
+}
+
+nlohmann::json TypedList(const QString& text) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const QString& part : text.split(',')) list.push_back(TypedQuantity(part));
+  return list;
+}
+
+nlohmann::json TypedLists(const QString& text) {
+  nlohmann::json lists = nlohmann::json::array();
+  for (const QString& part : text.split(';', Qt::SkipEmptyParts)) lists.push_back(TypedList(part));
+  return lists;
+}
+
+}  // namespace drape
