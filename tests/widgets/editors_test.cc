@@ -238,6 +238,10 @@ TEST_F(Widgets, NodesPickedInTheViewBecomeAGrippersSelection) {
   QTest::mouseClick(window.viewport(), Qt::LeftButton, {}, at);
   ASSERT_EQ(window.pickedNodes().size(), 1u);
   window.viewport()->setPickMode(false);
+  if (getenv("DRAPE_PICK_SHOT")) {  // to look at the picked node's marker
+    QTest::qWait(100);
+    window.viewport()->grabFramebuffer().save(getenv("DRAPE_PICK_SHOT"));
+  }
 
   HoldsPanel* grippers = window.grippers();
   const size_t before = doc->scene().grippers.size();
