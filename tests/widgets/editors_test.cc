@@ -16,9 +16,11 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
 
@@ -243,14 +245,44 @@ TEST_F(Widgets, NodesPickedInTheViewBecomeAGrippersSelection) {
     window.viewport()->grabFramebuffer().save(getenv("DRAPE_PICK_SHOT"));
   }
 
+  // One node is held as the point where it is (any mesh finds it): the
+  // engine's gripper holds exactly the picked node.
   HoldsPanel* grippers = window.grippers();
   const size_t before = doc->scene().grippers.size();
   ASSERT_TRUE(grippers->add("picked", 1)) << grippers->message().toStdString();
   ASSERT_EQ(doc->scene().grippers.size(), before + 1);
   const Gripper& g = doc->scene().grippers.back();
   EXPECT_EQ(g.hold, Fixity::kClamp);
-  EXPECT_EQ(std::get<NodesSelection>(g.select.shape).nodes,
+  EXPECT_EQ(std::get<PointSelection>(g.select.shape).at, (Vec2{0.05, 0.01}));
+  EXPECT_EQ(BuildShellModel(doc->scene()).grippers.back().nodes,
             std::vector<int>{static_cast<int>(expected)});
+
+  // Two nodes are held by their numbers.
+  const Eigen::Vector3d below(0.0502, -0.009, 0.0);
+  Eigen::Index second = 0;
+  (model.reference.positions.rowwise() - below.transpose())
+      .rowwise()
+      .squaredNorm()
+      .minCoeff(&second);
+  window.viewport()->setPickMode(true);
+  QTest::mouseClick(window.viewport(), Qt::LeftButton, {}, OnScreen(window.viewport(), below));
+  window.viewport()->setPickMode(false);
+  ASSERT_EQ(window.pickedNodes(),
+            (std::vector<int>{static_cast<int>(expected), static_cast<int>(second)}));
+  ASSERT_TRUE(window.supports()->add("picked", 0)) << window.supports()->message().toStdString();
+  EXPECT_EQ(std::get<NodesSelection>(doc->scene().supports.back().select.shape).nodes,
+            window.pickedNodes());
+  // A new mesh puts those numbers elsewhere: the workbench says so.
+  window.properties()->elementsX()->setValue(100);
+  emit window.properties()->elementsX()->editingFinished();
+  bool warned = false;
+  for (const QMessageBox* box : window.findChildren<QMessageBox*>())
+    warned = warned || box->text().contains("hold nodes by their numbers");
+  EXPECT_TRUE(warned);
+  EXPECT_TRUE(window.pickedNodes().empty());  // picked on the old mesh
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+
   // Removing the gripper the stages move is refused with the reader's words.
   grippers->list()->setCurrentRow(0);
   EXPECT_FALSE(grippers->removeSelected());

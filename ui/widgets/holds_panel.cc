@@ -126,10 +126,18 @@ QString HoldsPanel::message() const {
   return message_->text();
 }
 
-void HoldsPanel::setPickedNodes(const std::vector<int>& nodes) {
+void HoldsPanel::setPickedNodes(const std::vector<int>& nodes,
+                                const std::vector<std::array<double, 2>>& at) {
   picked_ = nodes;
+  picked_at_ = at;
   picked_label_->setText(nodes.empty() ? "no nodes picked"
                                        : QString("%1 nodes picked").arg(nodes.size()));
+}
+
+Selection HoldsPanel::PickedSelection() const {
+  if (picked_.size() == 1 && picked_at_.size() == 1)
+    return Selection{PointSelection{picked_at_[0]}, std::nullopt};
+  return Selection{NodesSelection{picked_}, std::nullopt};
 }
 
 bool HoldsPanel::Apply(const QString& what, const Scene& after) {
@@ -165,7 +173,7 @@ bool HoldsPanel::add(const QString& rule, int fixity, double x, double y) {
       message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
       return false;
     }
-    h.select.shape = NodesSelection{picked_};
+    h.select = PickedSelection();
   } else {
     const QStringList sides = {"left", "right", "bottom", "top"};
     if (!sides.contains(rule)) return false;
@@ -199,7 +207,7 @@ bool HoldsPanel::holdPicked() {
     message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
     return false;
   }
-  holds[i].select = Selection{NodesSelection{picked_}, std::nullopt};
+  holds[i].select = PickedSelection();
   SetHolds(after, role_, holds);
   return Apply(QString("%1 holds %2 picked nodes")
                    .arg(QString::fromStdString(holds[i].name))

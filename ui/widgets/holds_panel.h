@@ -10,7 +10,10 @@
 
 #include <QWidget>
 
+#include <array>
 #include <vector>
+
+#include "core/model/scene.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -20,7 +23,6 @@ class QListWidget;
 namespace drape {
 
 class SceneDocument;
-struct Scene;
 
 class HoldsPanel : public QWidget {
   Q_OBJECT
@@ -32,8 +34,10 @@ class HoldsPanel : public QWidget {
   QString message() const;
 
   // rule: "left", "right", "bottom", "top" (an edge), "corners", "point"
-  // (at x, y [m]) or "picked" (the nodes picked in the viewport); fixity
-  // 0: position, 1: clamp.
+  // (at x, y [m]) or "picked" (the nodes picked in the viewport: one is
+  // held as the point where it is, which any mesh density finds; several
+  // by their numbers, which hold only on this mesh); fixity 0: position,
+  // 1: clamp.
   bool add(const QString& rule, int fixity, double x = 0, double y = 0);
   bool setFixity(int fixity);  // of the selected one
   // The selected one now holds the picked nodes.
@@ -42,10 +46,12 @@ class HoldsPanel : public QWidget {
 
  public slots:
   void refresh();
-  void setPickedNodes(const std::vector<int>& nodes);
+  // The nodes picked in the viewport and their reference (x, y) [m].
+  void setPickedNodes(const std::vector<int>& nodes, const std::vector<std::array<double, 2>>& at);
 
  private:
   bool Apply(const QString& what, const Scene& after);
+  Selection PickedSelection() const;
 
   Role role_;
   SceneDocument* document_;
@@ -54,6 +60,7 @@ class HoldsPanel : public QWidget {
   QDoubleSpinBox *x_, *y_;
   QLabel *message_, *picked_label_;
   std::vector<int> picked_;
+  std::vector<std::array<double, 2>> picked_at_;
   bool refreshing_ = false;
 };
 

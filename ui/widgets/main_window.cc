@@ -515,6 +515,7 @@ void MainWindow::onDocumentChanged() {
   renderer_.reset();
   viewport_->doneCurrent();
   scene_ = document_->scene();
+  if (model_ && model->NodeCount() != model_->NodeCount()) WarnOfNodeNumbers(scene_);
   if (!model_ || model->NodeCount() != model_->NodeCount()) clearPicked();
   model_ = std::move(model);
   steps_.clear();
@@ -526,6 +527,24 @@ void MainWindow::onDocumentChanged() {
                                .arg(model_->NodeCount())
                                .arg(model_->mesh.ElementCount()));
   updateControls();
+}
+
+// Selections by node number hold on the mesh they were picked on: after
+// the mesh changed they may hold other places of the part.
+void MainWindow::WarnOfNodeNumbers(const Scene& scene) {
+  QStringList names;
+  auto check = [&](const std::string& name, const Selection& s) {
+    if (std::holds_alternative<NodesSelection>(s.shape)) names << QString::fromStdString(name);
+  };
+  for (const Support& s : scene.supports) check(s.name, s.select);
+  for (const Gripper& g : scene.grippers) check(g.name, g.select);
+  for (const PointLoad& l : scene.loads) check(l.name, l.select);
+  if (!names.isEmpty())
+    ShowError(this,
+              "Check the held nodes",
+              "The mesh changed; " + names.join(", ") +
+                  " hold nodes by their numbers, which are other places on the new mesh. "
+                  "Pick them again or hold them by a rule.");
 }
 
 void MainWindow::rebuildRenderer() {
@@ -611,11 +630,11 @@ void MainWindow::pickNear(const Eigen::Vector3d& point) {
     picked_.push_back(node);
   else
     picked_.erase(it);
-  supports_->setPickedNodes(picked_);
-  grippers_->setPickedNodes(picked_);
   std::vector<std::array<double, 2>> at;
   for (int n : picked_)
     at.push_back({model_->reference.positions(n, 0), model_->reference.positions(n, 1)});
+  supports_->setPickedNodes(picked_, at);
+  grippers_->setPickedNodes(picked_, at);
   probes_->setPicked(at);
   updateMarkers();
   statusBar()->showMessage(QString("node %1 %2; %3 nodes picked")
@@ -626,8 +645,8 @@ void MainWindow::pickNear(const Eigen::Vector3d& point) {
 
 void MainWindow::clearPicked() {
   picked_.clear();
-  supports_->setPickedNodes(picked_);
-  grippers_->setPickedNodes(picked_);
+  supports_->setPickedNodes({}, {});
+  grippers_->setPickedNodes({}, {});
   probes_->setPicked({});
   updateMarkers();
 }

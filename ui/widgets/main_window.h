@@ -131,6 +131,7 @@ class MainWindow : public QMainWindow {
   void rebuildRenderer();
   void updateControls();
   void updateHandles();
+  void WarnOfNodeNumbers(const Scene& scene);
   void updateMarkers();
   void onPathDragged(const Path& path);
   void onObstacleDragged();
