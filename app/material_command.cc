@@ -140,6 +140,8 @@ int RunFit(const FitArgs& args) {
              {"range", fit.range}};
     }
     if (args.json) std::cout << out.dump(2) << "\n";
+    if (!args.json)
+      std::printf("read %s and %s\n", curve.curvature_read.c_str(), curve.moment_read.c_str());
     // Warnings go to stderr with --json, so that stdout stays one document.
     for (const auto& w : warnings) (args.json ? std::cerr : std::cout) << "warning: " << w << "\n";
     return 0;

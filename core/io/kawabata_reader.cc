@@ -303,6 +303,7 @@ class KawabataParser {
   char delimiter_ = ',';
   bool has_header_ = false;
   std::vector<std::string> warnings_;
+  std::string curvature_read_, moment_read_;
 };
 
 KawabataCurve KawabataParser::Parse(std::string_view text) {
@@ -327,6 +328,12 @@ KawabataCurve KawabataParser::Parse(std::string_view text) {
                                      "a moment per width (N*m/m, gf*cm/cm)");
   const std::vector<Point> points =
       ReadPoints(rows, columns, k_column, m_column, k_factor, m_factor);
+  auto read = [](const Column& c, std::string_view kes_unit) {
+    return c.label + " in " +
+           (c.unit.empty() ? std::string(kes_unit) + " (KES units: none given)" : c.unit);
+  };
+  curvature_read_ = read(columns[k_column], kKesCurvatureUnit);
+  moment_read_ = read(columns[m_column], kKesMomentUnit);
 
   const std::vector<Run> runs = CleanRuns(SplitRuns(points));
   if (runs.empty()) {
@@ -612,6 +619,8 @@ KawabataCurve KawabataParser::Finish(const Run& curve) {
     result.moment.push_back(p.m);
   }
   result.warnings = std::move(warnings_);
+  result.curvature_read = curvature_read_;
+  result.moment_read = moment_read_;
   return result;
 }
 

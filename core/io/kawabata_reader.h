@@ -37,6 +37,9 @@ struct KawabataCurve {
   std::vector<double> curvature;      // K [1/m], strictly increasing
   std::vector<double> moment;         // M [N·m/m], same length
   std::vector<std::string> warnings;  // e.g. "only one branch found; used as is"
+  // Which columns were read and in which units, e.g. "column 'moment' in
+  // gf*cm/cm" or "column 2 in gf*cm/cm (KES units: none given)".
+  std::string curvature_read, moment_read;
 };
 
 // What is wrong with a Kawabata file, and where: what() reads

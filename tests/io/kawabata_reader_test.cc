@@ -126,6 +126,9 @@ TEST(KawabataReader, ConvertsHeaderUnitsToSI) {
   EXPECT_DOUBLE_EQ(curve.moment[3], 4.0);
   EXPECT_TRUE(HasWarning(curve, "only one monotone run"));
   EXPECT_TRUE(HasWarning(curve, "K >= 0 only"));
+  // What was read, for the user to check.
+  EXPECT_EQ(curve.curvature_read, "column 'curvature' in 1/mm");
+  EXPECT_EQ(curve.moment_read, "column 'moment' in N*m/m");
 }
 
 // KES's own units when none are given: 1/cm = 100 1/m and 1 gf·cm/cm = 1 gf =
@@ -141,6 +144,8 @@ TEST(KawabataReader, WithoutUnitsTheUnitsAreKesOwn) {
     EXPECT_DOUBLE_EQ(curve.curvature[2], 100.0);
     EXPECT_DOUBLE_EQ(curve.moment[1], 9.80665e-3);
     EXPECT_DOUBLE_EQ(curve.moment[2], 2.5 * 9.80665e-3);
+    EXPECT_NE(curve.moment_read.find("gf*cm/cm (KES units: none given)"), std::string::npos)
+        << curve.moment_read;
   }
 }
 

@@ -318,6 +318,9 @@ TEST_F(Widgets, MaterialDialogImportsKawabataDataAndLibraryMaterials) {
   dialog.file()->setText(QString::fromStdString(csv));
   ASSERT_TRUE(dialog.preview()) << dialog.message().toStdString();
   EXPECT_EQ(dialog.measuredPoints(), 51);  // −2.5 … 2.5 1/cm, branches averaged
+  // The dialog says which columns it read, in which units.
+  EXPECT_NE(dialog.message().toStdString().find("in 1/cm"), std::string::npos)
+      << dialog.message().toStdString();
   ASSERT_TRUE(dialog.applyBending());
   const auto& curve = std::get<CurveBending>(doc->scene().material.bending.warp);
   ASSERT_EQ(curve.points.size(), 51u);

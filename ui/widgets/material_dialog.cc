@@ -179,7 +179,12 @@ bool MaterialDialog::preview() {
       s->attachAxis(y_axis);
     }
     measured_points_ = static_cast<int>(k.size());
-    QString text = QString("%1 points, K from %2 to %3 1/cm").arg(k.size()).arg(lo).arg(hi);
+    QString text = QString("read %1 and %2\n%3 points, K from %4 to %5 1/cm")
+                       .arg(QString::fromStdString(curve.curvature_read),
+                            QString::fromStdString(curve.moment_read))
+                       .arg(k.size())
+                       .arg(lo)
+                       .arg(hi);
     if (law_->currentData().toString() == "polynomial")
       text += QString(", RMS error %1 gf·cm/cm").arg(rms, 0, 'g', 3);
     for (const auto& w : curve.warnings) text += "\nwarning: " + QString::fromStdString(w);
