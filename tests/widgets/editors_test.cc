@@ -15,6 +15,7 @@
 #include <vtkRendererCollection.h>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QMouseEvent>
@@ -504,6 +505,36 @@ TEST_F(Widgets, CameraViewsLookWhereTheirNamesSay) {
   EXPECT_NEAR(direction().z(), 0.0, 1e-9);  // level
   EXPECT_FALSE(window.setCamera("below"));
   EXPECT_EQ(window.viewport()->renderWindow()->GetRenderers()->GetNumberOfItems(), 1);
+}
+
+// Garbage typed into every field of every editor: each is refused, the
+// scene stays as it was, nothing crashes.
+TEST_F(Widgets, GarbageInAnyFieldChangesNothing) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  // Stage R's arc, so that the move's fields are filled and enabled.
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kStages, 1, 0));
+  const Scene original = window.document()->scene();
+  int fields = 0;
+  for (const char* garbage : {"kg", "1e999 m", "nan", "-", "1, 2, 3, 4, 5", ";;", "\u2603"}) {
+    for (QLineEdit* edit : window.findChildren<QLineEdit*>()) {
+      if (!edit->isEnabled() || edit->isReadOnly()) continue;
+      const QString before = edit->text();
+      edit->setText(QString::fromUtf8(garbage));
+      emit edit->editingFinished();
+      ++fields;
+      EXPECT_EQ(window.document()->scene(), original)
+          << "'" << garbage << "' was taken by the field that showed '" << before.toStdString()
+          << "'";
+      // A field the user typed into keeps (or gets back) a valid text
+      // after a refusal only where it has a value to go back to; reset
+      // the others for the next round.
+      if (edit->text() == QString::fromUtf8(garbage)) edit->setText(before);
+    }
+  }
+  EXPECT_GT(fields, 40);  // every editor's fields were tried
 }
 
 }  // namespace
