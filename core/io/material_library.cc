@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/io/json_cursor.h"
+#include "core/io/resource_dir.h"
 #include "core/model/scene_error.h"
 
 namespace drape {
@@ -28,9 +29,7 @@ std::vector<fs::path> MaterialLibraryDirs(const fs::path& scene_directory) {
   }
   dirs.push_back(scene_directory / "materials");
   dirs.push_back(scene_directory / ".." / "materials");
-#ifdef DRAPE_RESOURCE_DIR
-  dirs.push_back(fs::path(DRAPE_RESOURCE_DIR) / "materials");
-#endif
+  dirs.push_back(ResourceDir() / "materials");
   for (auto& d : dirs) d = d.lexically_normal();
   return dirs;
 }

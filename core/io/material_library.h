@@ -16,7 +16,7 @@ namespace drape {
 // Where names are looked up, in order: each directory of the environment
 // variable DRAPE_MATERIALS (colon-separated), `scene_directory`/materials,
 // `scene_directory`/../materials, and the library that ships with the
-// program (resources/materials).
+// program (ResourceDir()/materials).
 std::vector<std::filesystem::path> MaterialLibraryDirs(
     const std::filesystem::path& scene_directory);
 

@@ -6,7 +6,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <variant>
+
+#include <unistd.h>
 
 #include "core/io/scene_reader.h"
 #include "support/drape_command.h"
@@ -121,6 +124,48 @@ TEST(MaterialListCli, ListsTheShippedLibraryWithSources) {
     cotton = cotton || entry["library"] == "cotton-twill";
   }
   EXPECT_TRUE(cotton) << r.output;
+}
+
+// Laid out as `cmake --install` does (bin/, share/drape/resources/), the
+// program finds the library next to itself, not in the source tree; and
+// $DRAPE_RESOURCES comes first.
+TEST(MaterialListCli, AnInstalledProgramFindsItsOwnLibrary) {
+  namespace fs = std::filesystem;
+  const fs::path prefix =
+      fs::temp_directory_path() / ("drape-install-" + std::to_string(getpid()));
+  fs::remove_all(prefix);
+  fs::create_directories(prefix / "bin");
+  fs::create_directories(prefix / "share/drape/resources/materials");
+  fs::create_directories(prefix / "elsewhere/materials");
+  fs::copy_file(DRAPE_CLI, prefix / "bin/drape");
+  const fs::path material = test::SourceDir() / "resources/materials/cotton-twill-linear.json";
+  fs::copy_file(material, prefix / "share/drape/resources/materials/installed-twill.json");
+  fs::copy_file(material, prefix / "elsewhere/materials/elsewhere-twill.json");
+  const std::string run =
+      "cd '" + prefix.string() + "' && '" + (prefix / "bin/drape").string() + "' material list --json";
+
+  auto libraries = [](const test::CommandResult& r) {
+    std::map<std::string, std::string> found;  // name → file
+    for (const auto& entry : json::parse(r.output))
+      found[entry["library"].get<std::string>()] = entry["file"].get<std::string>();
+    return found;
+  };
+  const test::CommandResult installed = test::RunCommand(run, test::Captured::kStdout);
+  ASSERT_EQ(installed.exit_code, 0) << installed.output;
+  auto found = libraries(installed);
+  ASSERT_TRUE(found.count("installed-twill")) << installed.output;
+  EXPECT_EQ(found["installed-twill"].rfind((prefix / "share/drape/resources").string(), 0), 0u);
+  EXPECT_FALSE(found.count("cotton-twill")) << "the source tree's library was used";
+
+  const test::CommandResult chosen = test::RunCommand(
+      "DRAPE_RESOURCES='" + (prefix / "elsewhere").string() + "' && export DRAPE_RESOURCES && " +
+          run,
+      test::Captured::kStdout);
+  ASSERT_EQ(chosen.exit_code, 0) << chosen.output;
+  found = libraries(chosen);
+  EXPECT_TRUE(found.count("elsewhere-twill")) << chosen.output;
+  EXPECT_FALSE(found.count("installed-twill")) << chosen.output;
+  fs::remove_all(prefix);
 }
 
 }  // namespace

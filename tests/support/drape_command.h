@@ -17,12 +17,13 @@ struct CommandResult {
 
 enum class Captured { kBoth, kStdout, kStderr };
 
-// `drape ARGUMENTS`; stderr is not a terminal.
-inline CommandResult RunDrape(const std::string& arguments, Captured captured = Captured::kBoth) {
+// A shell command; stderr is not a terminal.
+inline CommandResult RunCommand(const std::string& shell_command,
+                                Captured captured = Captured::kBoth) {
   const char* redirect = captured == Captured::kBoth     ? " 2>&1"
                          : captured == Captured::kStdout ? " 2>/dev/null"
                                                          : " 2>&1 >/dev/null";
-  const std::string command = std::string(DRAPE_CLI) + " " + arguments + redirect;
+  const std::string command = "{ " + shell_command + "; }" + redirect;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return {-1, "popen failed"};
   std::string output;
@@ -30,6 +31,11 @@ inline CommandResult RunDrape(const std::string& arguments, Captured captured = 
   while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// `drape ARGUMENTS`.
+inline CommandResult RunDrape(const std::string& arguments, Captured captured = Captured::kBoth) {
+  return RunCommand(std::string(DRAPE_CLI) + " " + arguments, captured);
 }
 
 }  // namespace drape::test

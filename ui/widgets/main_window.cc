@@ -25,6 +25,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "core/io/resource_dir.h"
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
 #include "core/model/obstacle_anchor.h"
@@ -334,7 +335,7 @@ void MainWindow::buildActions() {
   recent_menu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
   QMenu* templates = file->addMenu("&New from template");
-  const QDir scenes(QString(DRAPE_RESOURCE_DIR) + "/scenes");
+  const QDir scenes(QString::fromStdString((ResourceDir() / "scenes").string()));
   for (const QString& name : scenes.entryList({"*.json"}, QDir::Files, QDir::Name))
     templates->addAction(QFileInfo(name).completeBaseName(),
                          this,
