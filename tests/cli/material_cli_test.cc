@@ -131,8 +131,7 @@ TEST(MaterialListCli, ListsTheShippedLibraryWithSources) {
 // $DRAPE_RESOURCES comes first.
 TEST(MaterialListCli, AnInstalledProgramFindsItsOwnLibrary) {
   namespace fs = std::filesystem;
-  const fs::path prefix =
-      fs::temp_directory_path() / ("drape-install-" + std::to_string(getpid()));
+  const fs::path prefix = fs::temp_directory_path() / ("drape-install-" + std::to_string(getpid()));
   fs::remove_all(prefix);
   fs::create_directories(prefix / "bin");
   fs::create_directories(prefix / "share/drape/resources/materials");
@@ -141,8 +140,8 @@ TEST(MaterialListCli, AnInstalledProgramFindsItsOwnLibrary) {
   const fs::path material = test::SourceDir() / "resources/materials/cotton-twill-linear.json";
   fs::copy_file(material, prefix / "share/drape/resources/materials/installed-twill.json");
   fs::copy_file(material, prefix / "elsewhere/materials/elsewhere-twill.json");
-  const std::string run =
-      "cd '" + prefix.string() + "' && '" + (prefix / "bin/drape").string() + "' material list --json";
+  const std::string run = "cd '" + prefix.string() + "' && '" + (prefix / "bin/drape").string() +
+                          "' material list --json";
 
   auto libraries = [](const test::CommandResult& r) {
     std::map<std::string, std::string> found;  // name → file
@@ -157,10 +156,10 @@ TEST(MaterialListCli, AnInstalledProgramFindsItsOwnLibrary) {
   EXPECT_EQ(found["installed-twill"].rfind((prefix / "share/drape/resources").string(), 0), 0u);
   EXPECT_FALSE(found.count("cotton-twill")) << "the source tree's library was used";
 
-  const test::CommandResult chosen = test::RunCommand(
-      "DRAPE_RESOURCES='" + (prefix / "elsewhere").string() + "' && export DRAPE_RESOURCES && " +
-          run,
-      test::Captured::kStdout);
+  const test::CommandResult chosen =
+      test::RunCommand("DRAPE_RESOURCES='" + (prefix / "elsewhere").string() +
+                           "' && export DRAPE_RESOURCES && " + run,
+                       test::Captured::kStdout);
   ASSERT_EQ(chosen.exit_code, 0) << chosen.output;
   found = libraries(chosen);
   EXPECT_TRUE(found.count("elsewhere-twill")) << chosen.output;

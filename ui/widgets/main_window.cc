@@ -326,6 +326,7 @@ MainWindow::~MainWindow() {
   // the GL context exists.
   viewport_->makeCurrent();
   handles_->clear();
+  obstacle_handles_->clear();
   renderer_.reset();
   viewport_->doneCurrent();
 }
@@ -513,6 +514,7 @@ void MainWindow::onDocumentChanged() {
   }
   viewport_->makeCurrent();
   handles_->clear();
+  obstacle_handles_->clear();
   renderer_.reset();
   viewport_->doneCurrent();
   scene_ = document_->scene();
@@ -553,7 +555,8 @@ void MainWindow::rebuildRenderer() {
   Eigen::AlignedBox3d bounds = RunBounds(scene_, {&model_->reference});
   for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
   viewport_->makeCurrent();
-  handles_->clear();  // its widgets point at the old renderer
+  handles_->clear();  // their widgets point at the old renderer
+  obstacle_handles_->clear();
   renderer_.reset();  // its actors leave the window before the new ones come
   renderer_ = std::make_unique<FrameRenderer>(
       scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
@@ -587,8 +590,12 @@ void MainWindow::onObstacleDragged() {
   const auto anchor = ObstacleAnchor(o);
   if (!anchor) return;
   o = Translated(o, obstacle_handles_->position(0) - *anchor);
-  const QString what = "move " + QString::fromStdString(o.name);
-  // Applied once VTK has finished with the drag's events (see onPathDragged).
+  ApplyAfterDrag("move " + QString::fromStdString(o.name), after);
+}
+
+// Applied once VTK has finished with the drag's events: the edit remakes
+// the renderer the handles live in. A refused edit puts them back.
+void MainWindow::ApplyAfterDrag(const QString& what, const Scene& after) {
   QTimer::singleShot(0, this, [this, what, after] {
     QString problem;
     if (!document_->tryApply(what, after, &problem)) {
@@ -606,16 +613,7 @@ void MainWindow::onPathDragged(const Path& path) {
     return;
   Move& move = after.stages[handle_stage_].moves[handle_move_];
   move.path = path;
-  // Applied once VTK has finished with the drag's events: the edit remakes
-  // the renderer the handles live in.
-  const QString what = "drag the path of " + QString::fromStdString(move.gripper);
-  QTimer::singleShot(0, this, [this, what, after] {
-    QString problem;
-    if (!document_->tryApply(what, after, &problem)) {
-      statusBar()->showMessage(problem);
-      updateHandles();
-    }
-  });
+  ApplyAfterDrag("drag the path of " + QString::fromStdString(move.gripper), after);
 }
 
 void MainWindow::pickNear(const Eigen::Vector3d& point) {

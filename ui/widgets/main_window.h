@@ -135,6 +135,7 @@ class MainWindow : public QMainWindow {
   void updateMarkers();
   void onPathDragged(const Path& path);
   void onObstacleDragged();
+  void ApplyAfterDrag(const QString& what, const Scene& after);
   void showEditor(int part, int index, int move);
   QDockWidget* addPanel(const QString& title, QWidget* panel, QDockWidget* tab_with);
 

@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+
 #include "core/model/scene.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/scene_document.h"
