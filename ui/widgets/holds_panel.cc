@@ -13,6 +13,7 @@
 
 #include "core/model/overloaded.h"
 #include "core/model/scene.h"
+#include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 
 namespace drape {
@@ -102,9 +103,7 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
   buttons->addWidget(hold_picked);
   buttons->addWidget(remove);
   layout->addLayout(buttons);
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  message_->setStyleSheet("color: #b00020");
+  message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] {
     this->add(rule_->currentText(), fixity_->currentIndex(), x_->value(), y_->value());
@@ -141,29 +140,24 @@ Selection HoldsPanel::PickedSelection() const {
 }
 
 bool HoldsPanel::Apply(const QString& what, const Scene& after) {
-  QString problem;
-  const bool done = document_->tryApply(what, after, &problem);
-  message_->setText(problem);
-  return done;
+  return ApplyOrSay(document_, message_, what, after);
 }
 
 bool HoldsPanel::add(const QString& rule, int fixity, double x, double y) {
   Scene after = document_->scene();
   auto holds = HoldsOf(after, role_);
-  const std::string noun = role_ == Role::kSupports ? "support " : "gripper ";
   // Names are unique over supports and grippers (stages name grippers).
-  auto taken = [&](const std::string& name) {
-    return std::any_of(after.supports.begin(),
-                       after.supports.end(),
-                       [&](const Support& o) { return o.name == name; }) ||
-           std::any_of(after.grippers.begin(), after.grippers.end(), [&](const Gripper& g) {
-             return g.name == name;
-           });
-  };
-  int n = static_cast<int>(holds.size()) + 1;
-  while (taken(noun + std::to_string(n))) ++n;
   Hold h;
-  h.name = noun + std::to_string(n);
+  h.name = FreeName(role_ == Role::kSupports ? "support" : "gripper",
+                    static_cast<int>(holds.size()) + 1,
+                    [&](const std::string& name) {
+                      return std::any_of(after.supports.begin(),
+                                         after.supports.end(),
+                                         [&](const Support& o) { return o.name == name; }) ||
+                             std::any_of(after.grippers.begin(),
+                                         after.grippers.end(),
+                                         [&](const Gripper& g) { return g.name == name; });
+                    });
   if (rule == "corners") {
     h.select.shape = CornersSelection{};
   } else if (rule == "point") {

@@ -13,6 +13,7 @@
 #include "core/io/scene_writer.h"
 #include "core/model/overloaded.h"
 #include "core/model/scene_error.h"
+#include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/typed_json.h"
 
@@ -75,9 +76,7 @@ MoveEditor::MoveEditor(SceneDocument* document, QWidget* parent)
   form_->addRow("axis", second_);
   form_->addRow("angle", third_);
   layout->addLayout(form_);
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  message_->setStyleSheet("color: #b00020");
+  message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] { addMove(carried_->currentText()); });
   connect(remove, &QPushButton::clicked, this, &MoveEditor::removeSelected);
@@ -115,10 +114,7 @@ void MoveEditor::setStage(int stage) {
 }
 
 bool MoveEditor::Apply(const QString& what, const Scene& after) {
-  QString problem;
-  const bool done = document_->tryApply(what, after, &problem);
-  message_->setText(problem);
-  return done;
+  return ApplyOrSay(document_, message_, what, after);
 }
 
 bool MoveEditor::addMove(const QString& carried) {

@@ -14,6 +14,7 @@
 #include "core/io/scene_writer.h"
 #include "core/model/scene.h"
 #include "core/model/scene_error.h"
+#include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 
 namespace drape {
@@ -49,9 +50,7 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   layout->addWidget(text_, 1);
   auto* apply = new QPushButton("Apply", this);
   layout->addWidget(apply);
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  message_->setStyleSheet("color: #b00020");
+  message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] { this->add(kind_->currentText()); });
   connect(remove, &QPushButton::clicked, this, &ObstaclesPanel::removeSelected);
@@ -66,22 +65,12 @@ QString ObstaclesPanel::message() const {
 }
 
 bool ObstaclesPanel::Apply(const QString& what, const Scene& after) {
-  QString problem;
-  const bool done = document_->tryApply(what, after, &problem);
-  message_->setText(problem);
-  return done;
+  return ApplyOrSay(document_, message_, what, after);
 }
 
 bool ObstaclesPanel::add(const QString& kind) {
   Scene after = document_->scene();
-  int n = static_cast<int>(after.obstacles.size()) + 1;
-  auto taken = [&](const std::string& name) {
-    return std::any_of(after.obstacles.begin(), after.obstacles.end(), [&](const Obstacle& o) {
-      return o.name == name;
-    });
-  };
-  while (taken(kind.toStdString() + " " + std::to_string(n))) ++n;
-  after.obstacles.push_back({kind.toStdString() + " " + std::to_string(n), DefaultShape(kind)});
+  after.obstacles.push_back({FreeName(kind.toStdString(), after.obstacles), DefaultShape(kind)});
   if (!Apply("add a " + kind, after)) return false;
   list_->setCurrentRow(list_->count() - 1);
   return true;

@@ -12,6 +12,7 @@
 
 #include "core/model/scene.h"
 #include "core/model/units.h"
+#include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 
 namespace drape {
@@ -34,9 +35,7 @@ ProbesPanel::ProbesPanel(SceneDocument* document, QWidget* parent)
   row->addWidget(add_picked);
   row->addWidget(remove);
   layout->addLayout(row);
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  message_->setStyleSheet("color: #b00020");
+  message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] {
     const QStringList parts = at_->text().split(',');
@@ -68,21 +67,12 @@ void ProbesPanel::setPicked(const std::vector<std::array<double, 2>>& at) {
 }
 
 bool ProbesPanel::Apply(const QString& what, const Scene& after) {
-  QString problem;
-  const bool done = document_->tryApply(what, after, &problem);
-  message_->setText(problem);
-  return done;
+  return ApplyOrSay(document_, message_, what, after);
 }
 
 bool ProbesPanel::add(double x, double y) {
   Scene after = document_->scene();
-  int n = static_cast<int>(after.probes.size()) + 1;
-  auto taken = [&](const std::string& name) {
-    return std::any_of(
-        after.probes.begin(), after.probes.end(), [&](const Probe& p) { return p.name == name; });
-  };
-  while (taken("probe " + std::to_string(n))) ++n;
-  after.probes.push_back({"probe " + std::to_string(n), {x, y}});
+  after.probes.push_back({FreeName("probe", after.probes), {x, y}});
   if (!Apply(QString("add a probe at (%1, %2) m").arg(x).arg(y), after)) return false;
   list_->setCurrentRow(list_->count() - 1);
   return true;

@@ -16,6 +16,7 @@
 #include "core/model/fabric_mesh.h"
 #include "core/model/overloaded.h"
 #include "core/model/scene_error.h"
+#include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/typed_json.h"
 
@@ -119,9 +120,7 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   ny_ = new QSpinBox(fabric);
   for (QSpinBox* s : {nx_, ny_}) s->setRange(1, 400);
   mesh_info_ = new QLabel(fabric);
-  fabric_message_ = new QLabel(fabric);
-  fabric_message_->setWordWrap(true);
-  fabric_message_->setStyleSheet("color: #b00020");
+  fabric_message_ = MakeMessageLabel(fabric);
   fabric_form->addRow("outline", shape_);
   fabric_form->addRow("size", extent_);
   fabric_form->addRow("centre [m]", center_);

@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include "core/model/scene.h"
+#include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/scene_document.h"
 
@@ -51,9 +52,7 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   layout->addLayout(form);
   moves_ = new MoveEditor(document_, this);
   layout->addWidget(moves_);
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  message_->setStyleSheet("color: #b00020");
+  message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
   connect(down, &QPushButton::clicked, this, [this] { moveSelected(1); });
@@ -76,22 +75,13 @@ QString StagesPanel::message() const {
 }
 
 bool StagesPanel::Apply(const QString& what, const Scene& after) {
-  QString problem;
-  const bool done = document_->tryApply(what, after, &problem);
-  message_->setText(problem);
-  return done;
+  return ApplyOrSay(document_, message_, what, after);
 }
 
 bool StagesPanel::addStage(const QString& kind) {
   Scene after = document_->scene();
   Stage stage;
-  int n = static_cast<int>(after.stages.size()) + 1;
-  auto taken = [&](const std::string& name) {
-    return std::any_of(
-        after.stages.begin(), after.stages.end(), [&](const Stage& s) { return s.name == name; });
-  };
-  while (taken("stage " + std::to_string(n))) ++n;
-  stage.name = "stage " + std::to_string(n);
+  stage.name = FreeName("stage", after.stages);
   const QStringList kinds = {"gravity", "load", "move", "hold"};
   if (!kinds.contains(kind)) return false;
   stage.kind = static_cast<StageKind>(kinds.indexOf(kind));

@@ -1,0 +1,31 @@
+#include "ui/widgets/edit_feedback.h"
+
+#include <QLabel>
+
+#include "ui/widgets/scene_document.h"
+
+namespace drape {
+
+QLabel* MakeMessageLabel(QWidget* parent) {
+  auto* label = new QLabel(parent);
+  label->setWordWrap(true);
+  label->setStyleSheet("color: #b00020");
+  return label;
+}
+
+bool ApplyOrSay(SceneDocument* document, QLabel* message, const QString& what, const Scene& after) {
+  QString problem;
+  const bool done = document->tryApply(what, after, &problem);
+  message->setText(problem);
+  return done;
+}
+
+std::string FreeName(const std::string& stem,
+                     int first,
+                     const std::function<bool(const std::string&)>& taken) {
+  int n = first;
+  while (taken(stem + " " + std::to_string(n))) ++n;
+  return stem + " " + std::to_string(n);
+}
+
+}  // namespace drape
