@@ -338,6 +338,23 @@ TEST_F(Widgets, MaterialDialogImportsKawabataDataAndLibraryMaterials) {
   ASSERT_TRUE(dialog.applyBending());
   const auto& poly = std::get<PolynomialBending>(doc->scene().material.bending.warp);
   EXPECT_NEAR(poly.coefficients[0], 1.33387 * 9.80665e-5, 1e-9);
+  // The polynomial for the weft only: the warp keeps it, the weft is new.
+  dialog.law()->setCurrentIndex(dialog.law()->findData("curve"));
+  ASSERT_TRUE(dialog.preview());
+  dialog.direction()->setCurrentIndex(dialog.direction()->findData("weft"));
+  ASSERT_TRUE(dialog.applyBending()) << dialog.message().toStdString();
+  const Bending& both = doc->scene().material.bending;
+  EXPECT_TRUE(std::holds_alternative<PolynomialBending>(both.warp));
+  ASSERT_TRUE(both.weft.has_value());
+  EXPECT_TRUE(std::holds_alternative<CurveBending>(*both.weft));
+  // And for the warp only: the weft's curve stays.
+  dialog.direction()->setCurrentIndex(dialog.direction()->findData("warp"));
+  ASSERT_TRUE(dialog.applyBending());
+  EXPECT_TRUE(std::holds_alternative<CurveBending>(doc->scene().material.bending.warp));
+  EXPECT_TRUE(std::holds_alternative<CurveBending>(*doc->scene().material.bending.weft));
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  dialog.direction()->setCurrentIndex(dialog.direction()->findData("both"));
   doc->undoStack()->undo();
   doc->undoStack()->undo();
   EXPECT_EQ(doc->scene(), original);

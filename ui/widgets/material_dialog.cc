@@ -85,6 +85,11 @@ MaterialDialog::MaterialDialog(SceneDocument* document, QWidget* parent)
   degree_->setRange(1, 9);
   degree_->setValue(5);
   form->addRow("polynomial degree", degree_);
+  direction_ = new QComboBox(this);
+  direction_->addItem("warp and weft alike (one law)", "both");
+  direction_->addItem("warp (the weft keeps its law)", "warp");
+  direction_->addItem("weft (the warp keeps its law)", "weft");
+  form->addRow("applies to", direction_);
   layout->addLayout(form);
 
   message_ = new QLabel(this);
@@ -201,9 +206,32 @@ bool MaterialDialog::preview() {
 bool MaterialDialog::applyBending() {
   if (!previewed_ && !preview()) return false;
   Scene after = document_->scene();
-  after.material.bending = Bending{*previewed_, std::nullopt};
-  document_->apply("bending law from " + QFileInfo(file_->text()).fileName(), after);
-  return true;
+  Bending& bending = after.material.bending;
+  // One law for one direction keeps the other's (the old single law when
+  // there was one): the part becomes direction dependent, never silently
+  // isotropic.
+  const QString direction = direction_->currentData().toString();
+  if (direction == "both") {
+    bending = Bending{*previewed_, std::nullopt};
+  } else {
+    const BendingLaw weft = bending.weft ? *bending.weft : bending.warp;
+    if (direction == "warp") {
+      bending = Bending{*previewed_, weft};
+    } else {
+      bending = Bending{bending.warp, *previewed_};
+    }
+  }
+  QString problem;
+  const bool done = document_->tryApply(QString("%1 bending law from %2")
+                                            .arg(direction == "both" ? QString("the") : direction,
+                                                 QFileInfo(file_->text()).fileName()),
+                                        after,
+                                        &problem);
+  if (!done) {
+    message_->setStyleSheet("color: #b00020");
+    message_->setText(problem);
+  }
+  return done;
 }
 
 bool MaterialDialog::applyLibrary() {

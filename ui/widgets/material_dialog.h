@@ -32,13 +32,16 @@ class MaterialDialog : public QDialog {
   QComboBox* law() const { return law_; }
   QSpinBox* degree() const { return degree_; }
   QComboBox* library() const { return library_; }
+  // "both" (one law), "warp" or "weft" (that direction's law only).
+  QComboBox* direction() const { return direction_; }
 
   // Reads the file and fits the law; false with the reader's message (line
   // and problem) shown in the dialog.
   bool preview();
   QString message() const;
   int measuredPoints() const { return measured_points_; }
-  // The previewed law into the scene's bending (one edit); false if none.
+  // The previewed law into the scene's bending for direction() (one edit);
+  // false if none, or when the engine refuses it (the message says why).
   bool applyBending();
   // The library material chosen into the scene (one edit).
   bool applyLibrary();
@@ -46,7 +49,7 @@ class MaterialDialog : public QDialog {
  private:
   SceneDocument* document_;
   QLineEdit* file_;
-  QComboBox *branch_, *law_, *library_;
+  QComboBox *branch_, *law_, *library_, *direction_;
   QLineEdit *curvature_column_, *moment_column_;
   QSpinBox* degree_;
   QLabel* message_;
