@@ -507,6 +507,42 @@ TEST_F(Widgets, CameraViewsLookWhereTheirNamesSay) {
   EXPECT_EQ(window.viewport()->renderWindow()->GetRenderers()->GetNumberOfItems(), 1);
 }
 
+TEST_F(Widgets, TheMembraneIsIsotropicOrOrthotropic) {
+  MainWindow window;
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  PropertyPanel* panel = window.properties();
+  const Scene original = doc->scene();
+  const auto iso = std::get<IsotropicMembrane>(original.material.membrane);
+  ASSERT_TRUE(panel->setOrthotropic(true)) << panel->materialMessage().toStdString();
+  auto ortho = [&] { return std::get<OrthotropicMembrane>(doc->scene().material.membrane); };
+  // The same material: G = E / 2(1 + ν).
+  EXPECT_EQ(ortho().e1, iso.youngs_modulus);
+  EXPECT_EQ(ortho().e2, iso.youngs_modulus);
+  EXPECT_EQ(ortho().nu12, iso.poisson_ratio);
+  EXPECT_DOUBLE_EQ(ortho().g12, iso.youngs_modulus / (2 * (1 + iso.poisson_ratio)));
+
+  QLineEdit* e2 = panel->e2()->edit();
+  e2->setText("100 kPa");
+  emit e2->editingFinished();
+  EXPECT_DOUBLE_EQ(ortho().e2, 1e5);
+  // ν₁₂² E₂/E₁ ≥ 1 is not a stable law: the reader's message, the value back.
+  QLineEdit* nu = panel->nu12()->edit();
+  nu->setText("5");
+  emit nu->editingFinished();
+  EXPECT_NE(panel->materialMessage().toStdString().find("nu12"), std::string::npos)
+      << panel->materialMessage().toStdString();
+  EXPECT_EQ(ortho().nu12, iso.poisson_ratio);
+  EXPECT_EQ(nu->text().toStdString(), QString::number(iso.poisson_ratio).toStdString());
+
+  ASSERT_TRUE(panel->setOrthotropic(false));
+  const auto back = std::get<IsotropicMembrane>(doc->scene().material.membrane);
+  EXPECT_EQ(back.youngs_modulus, iso.youngs_modulus);
+  QUndoStack* undo = doc->undoStack();
+  while (undo->canUndo()) undo->undo();
+  EXPECT_EQ(doc->scene(), original);
+}
+
 // Garbage typed into every field of every editor: each is refused, the
 // scene stays as it was, nothing crashes.
 TEST_F(Widgets, GarbageInAnyFieldChangesNothing) {

@@ -162,21 +162,59 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
       [](double v) { return v >= 0 && v < 0.5 ? QString() : QString("must lie in [0, 0.5)"); },
       material);
   angle_ = new QuantityField(dim::kAngle, "45 deg", nullptr, material);
+  membrane_ = new QComboBox(material);
+  membrane_->addItems({"isotropic", "orthotropic (warp 1, weft 2)"});
+  e1_ = new QuantityField(dim::kPressure, "60450 gf/cm^2", Positive, material);
+  e2_ = new QuantityField(dim::kPressure, "30000 gf/cm^2", Positive, material);
+  nu12_ = new QuantityField(dim::kNone, "0.2", NonNegative, material);
+  g12_ = new QuantityField(dim::kPressure, "5000 gf/cm^2", Positive, material);
+  material_message_ = MakeMessageLabel(material);
   form->addRow("thickness h", thickness_);
   form->addRow("areal weight w", weight_);
+  form->addRow("membrane", membrane_);
   form->addRow("Young's modulus E", modulus_);
   form->addRow("Poisson's ratio ν", poisson_);
+  form->addRow("E₁ (warp)", e1_);
+  form->addRow("E₂ (weft)", e2_);
+  form->addRow("ν₁₂", nu12_);
+  form->addRow("G₁₂", g12_);
   form->addRow("warp angle", angle_);
+  form->addRow(material_message_);
+  material_form_ = form;
   layout->addWidget(material);
 
+  // Checked by the reader's and the engine's rules (an orthotropic ν₁₂ must
+  // keep the law stable); a refused value goes back to the scene's.
   auto edit = [this](const QString& what, auto change) {
     return [this, what, change](double si, const QString& text) {
       if (refreshing_) return;
       Scene after = document_->scene();
       change(after, si);
-      document_->apply(what + " " + text, after);
+      if (!ApplyOrSay(document_, material_message_, what + " " + text, after)) refresh();
     };
   };
+  auto ortho = [](auto set) {
+    return [set](Scene& s, double v) {
+      if (auto* m = std::get_if<OrthotropicMembrane>(&s.material.membrane)) set(*m, v);
+    };
+  };
+  connect(e1_,
+          &QuantityField::committed,
+          this,
+          edit("E₁", ortho([](OrthotropicMembrane& m, double v) { m.e1 = v; })));
+  connect(e2_,
+          &QuantityField::committed,
+          this,
+          edit("E₂", ortho([](OrthotropicMembrane& m, double v) { m.e2 = v; })));
+  connect(nu12_,
+          &QuantityField::committed,
+          this,
+          edit("ν₁₂", ortho([](OrthotropicMembrane& m, double v) { m.nu12 = v; })));
+  connect(g12_,
+          &QuantityField::committed,
+          this,
+          edit("G₁₂", ortho([](OrthotropicMembrane& m, double v) { m.g12 = v; })));
+  connect(membrane_, &QComboBox::activated, this, [this](int i) { setOrthotropic(i == 1); });
   connect(thickness_, &QuantityField::committed, this, edit("thickness", [](Scene& s, double v) {
             s.material.thickness = v;
           }));
@@ -215,6 +253,29 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   layout->addStretch(1);
   connect(document_, &SceneDocument::changed, this, &PropertyPanel::refresh);
   refresh();
+}
+
+QString PropertyPanel::materialMessage() const {
+  return material_message_->text();
+}
+
+bool PropertyPanel::setOrthotropic(bool on) {
+  Scene after = document_->scene();
+  Membrane& m = after.material.membrane;
+  if (on == std::holds_alternative<OrthotropicMembrane>(m)) return true;
+  if (const auto* iso = std::get_if<IsotropicMembrane>(&m)) {
+    // The same material, described by its directions: E₁ = E₂ = E, ν₁₂ = ν,
+    // G₁₂ = E / 2(1 + ν); then each can be changed.
+    const double e = iso->youngs_modulus, nu = iso->poisson_ratio;
+    m = OrthotropicMembrane{e, e, nu, e / (2 * (1 + nu))};
+  } else {
+    const auto& o = std::get<OrthotropicMembrane>(m);
+    m = IsotropicMembrane{o.e1, o.nu12};
+  }
+  const bool done = ApplyOrSay(
+      document_, material_message_, on ? "orthotropic membrane" : "isotropic membrane", after);
+  if (!done) refresh();
+  return done;
 }
 
 QString PropertyPanel::fabricMessage() const {
@@ -323,11 +384,21 @@ void PropertyPanel::refresh() {
   thickness_->setValue(s.material.thickness, Si(s.material.thickness, "m"));
   weight_->setValue(s.material.areal_weight, Si(s.material.areal_weight, "Pa"));
   const auto* iso = std::get_if<IsotropicMembrane>(&s.material.membrane);
-  modulus_->setEnabled(iso != nullptr);
-  poisson_->setEnabled(iso != nullptr);
+  const auto* orthotropic = std::get_if<OrthotropicMembrane>(&s.material.membrane);
+  membrane_->setCurrentIndex(iso ? 0 : 1);
+  for (QWidget* f : std::initializer_list<QWidget*>{modulus_, poisson_})
+    material_form_->setRowVisible(f, iso != nullptr);
+  for (QWidget* f : std::initializer_list<QWidget*>{e1_, e2_, nu12_, g12_})
+    material_form_->setRowVisible(f, orthotropic != nullptr);
   if (iso) {
     modulus_->setValue(iso->youngs_modulus, Si(iso->youngs_modulus, "Pa"));
     poisson_->setValue(iso->poisson_ratio, QString::number(iso->poisson_ratio));
+  }
+  if (orthotropic) {
+    e1_->setValue(orthotropic->e1, Si(orthotropic->e1, "Pa"));
+    e2_->setValue(orthotropic->e2, Si(orthotropic->e2, "Pa"));
+    nu12_->setValue(orthotropic->nu12, QString::number(orthotropic->nu12));
+    g12_->setValue(orthotropic->g12, Si(orthotropic->g12, "Pa"));
   }
   angle_->setValue(s.material.angle_deg * M_PI / 180, QString("%1 deg").arg(s.material.angle_deg));
   int preset = static_cast<int>(std::size(kPresets));

@@ -68,6 +68,15 @@ class PropertyPanel : public QWidget {
   QComboBox* solverPreset() const { return preset_; }
   QLabel* meshInfo() const { return mesh_info_; }
   QString fabricMessage() const;
+  QString materialMessage() const;
+  QComboBox* membrane() const { return membrane_; }
+  QuantityField* e1() const { return e1_; }
+  QuantityField* e2() const { return e2_; }
+  QuantityField* nu12() const { return nu12_; }
+  QuantityField* g12() const { return g12_; }
+  // Isotropic ↔ orthotropic, keeping the material's stiffness (E₁ = E₂ = E,
+  // ν₁₂ = ν, G₁₂ = E/2(1 + ν); back: E = E₁, ν = ν₁₂).
+  bool setOrthotropic(bool on);
 
   // The outline: shape "rectangle" (extent "width, height"), "disk" (extent
   // the radius) or "polygon" (extent "x, y; x, y; …"), with its centre
@@ -91,6 +100,10 @@ class PropertyPanel : public QWidget {
   QSpinBox *nx_, *ny_;
   QLabel *mesh_info_, *fabric_message_;
   QuantityField *thickness_, *weight_, *modulus_, *poisson_, *angle_;
+  QuantityField *e1_, *e2_, *nu12_, *g12_;
+  QComboBox* membrane_;
+  QFormLayout* material_form_;
+  QLabel* material_message_;
   QComboBox* preset_;
   bool refreshing_ = false;
 };
