@@ -47,8 +47,15 @@ void Finish(drape::MainWindow& window,
 bool Select(drape::MainWindow& window, const QString& spec) {
   using Part = drape::ModelTree::Part;
   const QStringList parts = spec.split(':');
-  const QStringList names = {
-      "fabric", "material", "supports", "grippers", "obstacles", "stages", "probes", "solver"};
+  const QStringList names = {"fabric",
+                             "material",
+                             "supports",
+                             "grippers",
+                             "obstacles",
+                             "stages",
+                             "probes",
+                             "solver",
+                             "loads"};
   const int part = static_cast<int>(names.indexOf(parts[0]));
   bool ok = part >= 0 && parts.size() <= 3;
   const int index = parts.size() > 1 ? parts[1].toInt(&ok) : -1;
@@ -81,7 +88,8 @@ int main(int argc, char** argv) {
   const QCommandLineOption select(
       "select",
       "Choose what to edit, as in the scene tree: fabric, material, supports, grippers, "
-      "obstacles, stages, probes or solver, with an index and a move (0-based), e.g. stages:1:0",
+      "loads, obstacles, stages, probes or solver, with an index and a move (0-based), e.g. "
+      "stages:1:0",
       "PART[:INDEX[:MOVE]]");
   parser.addOptions({run, select, screenshot, window_shot, quit});
   parser.process(app);

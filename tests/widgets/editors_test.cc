@@ -33,6 +33,7 @@
 #include "support/test_paths.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"
+#include "ui/widgets/loads_panel.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
@@ -538,6 +539,34 @@ TEST_F(Widgets, TheMembraneIsIsotropicOrOrthotropic) {
   ASSERT_TRUE(panel->setOrthotropic(false));
   const auto back = std::get<IsotropicMembrane>(doc->scene().material.membrane);
   EXPECT_EQ(back.youngs_modulus, iso.youngs_modulus);
+  QUndoStack* undo = doc->undoStack();
+  while (undo->canUndo()) undo->undo();
+  EXPECT_EQ(doc->scene(), original);
+}
+
+TEST_F(Widgets, LoadsAreTypedWithUnitsAndAppliedByALoadStage) {
+  MainWindow window;
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  LoadsPanel* loads = window.loads();
+  const Scene original = doc->scene();
+  // 2 gf down on the strip's middle, as a point (the node found there).
+  ASSERT_TRUE(loads->add("point", "0, 0, -2 gf", "0, 0, 0", 0.0, 0.0))
+      << loads->message().toStdString();
+  ASSERT_EQ(doc->scene().loads.size(), 1u);
+  const PointLoad& load = doc->scene().loads[0];
+  EXPECT_DOUBLE_EQ(load.force[2], -2 * 9.80665e-3);
+  EXPECT_EQ(std::get<PointSelection>(load.select.shape).at, (Vec2{0, 0}));
+  EXPECT_EQ(window.tree()->item(ModelTree::Part::kLoads)->childCount(), 1);
+  // A force with a moment's unit: the reader's message names the key.
+  EXPECT_FALSE(loads->setForce("0, 0, -2 gf*cm", "0, 0, 0"));
+  EXPECT_NE(loads->message().toStdString().find("loads[0].force"), std::string::npos)
+      << loads->message().toStdString();
+  ASSERT_TRUE(loads->setForce("0, 0, -1 N", "0, 0.01, 0"));
+  EXPECT_EQ(doc->scene().loads[0].moment, (Vec3{0, 0.01, 0}));
+  // A load stage applies it; the engine takes the scene.
+  ASSERT_TRUE(window.stages()->addStage("load")) << window.stages()->message().toStdString();
+  EXPECT_EQ(doc->scene().stages.back().kind, StageKind::kLoad);
   QUndoStack* undo = doc->undoStack();
   while (undo->canUndo()) undo->undo();
   EXPECT_EQ(doc->scene(), original);

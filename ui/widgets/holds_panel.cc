@@ -15,6 +15,7 @@
 #include "core/model/scene.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/selection_rule.h"
 
 namespace drape {
 namespace {
@@ -45,25 +46,6 @@ void SetHolds(Scene& s, HoldsPanel::Role role, const std::vector<Hold>& holds) {
   }
 }
 
-QString Describe(const Selection& s) {
-  return std::visit(
-      Overloaded{
-          [](const PointSelection& p) {
-            return QString("point (%1, %2) m").arg(p.at[0]).arg(p.at[1]);
-          },
-          [](const LineSelection&) { return QString("line"); },
-          [](const BoxSelection&) { return QString("box"); },
-          [](const CornersSelection&) { return QString("corners"); },
-          [](const EdgeSelection& e) {
-            const char* names[] = {
-                "left edge", "right edge", "bottom edge", "top edge", "boundary"};
-            return QString(names[static_cast<int>(e.side)]);
-          },
-          [](const NodesSelection& n) { return QString("%1 nodes").arg(n.nodes.size()); },
-      },
-      s.shape);
-}
-
 }  // namespace
 
 HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
@@ -73,25 +55,9 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
   list_ = new QListWidget(this);
   layout->addWidget(list_, 1);
   auto* form = new QFormLayout;
-  rule_ = new QComboBox(this);
-  rule_->addItems({"left", "right", "bottom", "top", "corners", "point", "picked"});
-  rule_->setToolTip(
-      "an edge, the corners, the node nearest a point, or the nodes picked in the "
-      "view (Pick nodes, then click the fabric)");
+  rule_ = new SelectionRuleEditor(form, "holds", this);
   fixity_ = new QComboBox(this);
   fixity_->addItems({"position (pinned)", "clamp (position and director)"});
-  x_ = new QDoubleSpinBox(this);
-  y_ = new QDoubleSpinBox(this);
-  for (QDoubleSpinBox* s : {x_, y_}) {
-    s->setRange(-100, 100);
-    s->setDecimals(4);
-    s->setSuffix(" m");
-  }
-  picked_label_ = new QLabel("no nodes picked", this);
-  form->addRow("holds", rule_);
-  form->addRow("point x", x_);
-  form->addRow("point y", y_);
-  form->addRow("picked", picked_label_);
   form->addRow("fixity", fixity_);
   layout->addLayout(form);
   auto* buttons = new QHBoxLayout;
@@ -106,7 +72,11 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
   message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] {
-    this->add(rule_->currentText(), fixity_->currentIndex(), x_->value(), y_->value());
+    QString problem;
+    if (const auto s = rule_->current(&problem))
+      AddHold(*s, fixity_->currentIndex());
+    else
+      message_->setText(problem);
   });
   connect(hold_picked, &QPushButton::clicked, this, &HoldsPanel::holdPicked);
   connect(remove, &QPushButton::clicked, this, &HoldsPanel::removeSelected);
@@ -127,16 +97,7 @@ QString HoldsPanel::message() const {
 
 void HoldsPanel::setPickedNodes(const std::vector<int>& nodes,
                                 const std::vector<std::array<double, 2>>& at) {
-  picked_ = nodes;
-  picked_at_ = at;
-  picked_label_->setText(nodes.empty() ? "no nodes picked"
-                                       : QString("%1 nodes picked").arg(nodes.size()));
-}
-
-Selection HoldsPanel::PickedSelection() const {
-  if (picked_.size() == 1 && picked_at_.size() == 1)
-    return Selection{PointSelection{picked_at_[0]}, std::nullopt};
-  return Selection{NodesSelection{picked_}, std::nullopt};
+  rule_->setPicked(nodes, at);
 }
 
 bool HoldsPanel::Apply(const QString& what, const Scene& after) {
@@ -144,6 +105,16 @@ bool HoldsPanel::Apply(const QString& what, const Scene& after) {
 }
 
 bool HoldsPanel::add(const QString& rule, int fixity, double x, double y) {
+  QString problem;
+  const auto selection = rule_->selection(rule, x, y, &problem);
+  if (!selection) {
+    message_->setText(problem);
+    return false;
+  }
+  return AddHold(*selection, fixity);
+}
+
+bool HoldsPanel::AddHold(const Selection& selection, int fixity) {
   Scene after = document_->scene();
   auto holds = HoldsOf(after, role_);
   // Names are unique over supports and grippers (stages name grippers).
@@ -158,25 +129,14 @@ bool HoldsPanel::add(const QString& rule, int fixity, double x, double y) {
                                          after.grippers.end(),
                                          [&](const Gripper& g) { return g.name == name; });
                     });
-  if (rule == "corners") {
-    h.select.shape = CornersSelection{};
-  } else if (rule == "point") {
-    h.select.shape = PointSelection{{x, y}};
-  } else if (rule == "picked") {
-    if (picked_.empty()) {
-      message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
-      return false;
-    }
-    h.select = PickedSelection();
-  } else {
-    const QStringList sides = {"left", "right", "bottom", "top"};
-    if (!sides.contains(rule)) return false;
-    h.select.shape = EdgeSelection{static_cast<Side>(sides.indexOf(rule))};
-  }
+  h.select = selection;
   h.fixity = fixity == 1 ? Fixity::kClamp : Fixity::kPosition;
   holds.push_back(h);
   SetHolds(after, role_, holds);
-  if (!Apply(QString("add %1 (%2)").arg(QString::fromStdString(h.name)).arg(rule), after))
+  if (!Apply(QString("add %1 (%2)")
+                 .arg(QString::fromStdString(h.name))
+                 .arg(DescribeSelection(selection)),
+             after))
     return false;
   list_->setCurrentRow(list_->count() - 1);
   return true;
@@ -197,15 +157,17 @@ bool HoldsPanel::holdPicked() {
   Scene after = document_->scene();
   auto holds = HoldsOf(after, role_);
   if (i < 0 || i >= static_cast<int>(holds.size())) return false;
-  if (picked_.empty()) {
-    message_->setText("no nodes picked: turn on Pick nodes and click the fabric");
+  QString problem;
+  const auto picked = rule_->picked(&problem);
+  if (!picked) {
+    message_->setText(problem);
     return false;
   }
-  holds[i].select = PickedSelection();
+  holds[i].select = *picked;
   SetHolds(after, role_, holds);
-  return Apply(QString("%1 holds %2 picked nodes")
+  return Apply(QString("%1 holds %2")
                    .arg(QString::fromStdString(holds[i].name))
-                   .arg(picked_.size()),
+                   .arg(DescribeSelection(*picked)),
                after);
 }
 
@@ -229,7 +191,7 @@ void HoldsPanel::refresh() {
   for (const Hold& h : holds)
     list_->addItem(QString("%1: %2, %3")
                        .arg(QString::fromStdString(h.name))
-                       .arg(Describe(h.select))
+                       .arg(DescribeSelection(h.select))
                        .arg(h.fixity == Fixity::kClamp ? "clamped" : "pinned"));
   if (!holds.empty()) {
     const int i = std::clamp(row, 0, static_cast<int>(holds.size()) - 1);

@@ -16,13 +16,13 @@
 #include "core/model/scene.h"
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 
 namespace drape {
 
 class SceneDocument;
+class SelectionRuleEditor;
 
 class HoldsPanel : public QWidget {
   Q_OBJECT
@@ -51,16 +51,14 @@ class HoldsPanel : public QWidget {
 
  private:
   bool Apply(const QString& what, const Scene& after);
-  Selection PickedSelection() const;
+  bool AddHold(const Selection& selection, int fixity);
 
   Role role_;
   SceneDocument* document_;
   QListWidget* list_;
-  QComboBox *rule_, *fixity_;
-  QDoubleSpinBox *x_, *y_;
-  QLabel *message_, *picked_label_;
-  std::vector<int> picked_;
-  std::vector<std::array<double, 2>> picked_at_;
+  SelectionRuleEditor* rule_;
+  QComboBox* fixity_;
+  QLabel* message_;
   bool refreshing_ = false;
 };
 

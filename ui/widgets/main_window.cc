@@ -36,6 +36,7 @@
 #include "ui/render/surface_export.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"
+#include "ui/widgets/loads_panel.h"
 #include "ui/widgets/material_dialog.h"
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
@@ -115,6 +116,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   QDockWidget* supports_dock = addPanel("Supports", supports_, properties_dock);
   grippers_ = new HoldsPanel(HoldsPanel::Role::kGrippers, document_, this);
   QDockWidget* grippers_dock = addPanel("Grippers", grippers_, properties_dock);
+  loads_ = new LoadsPanel(document_, this);
+  QDockWidget* loads_dock = addPanel("Loads", loads_, properties_dock);
   obstacles_ = new ObstaclesPanel(document_, this);
   QDockWidget* obstacles_dock = addPanel("Obstacles", obstacles_, properties_dock);
   stages_ = new StagesPanel(document_, this);
@@ -129,7 +132,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                    obstacles_dock,
                    stages_dock,
                    probes_dock,
-                   properties_dock};
+                   properties_dock,
+                   loads_dock};
   properties_dock->raise();
   resizeDocks({tree_dock, properties_dock}, {220, 700}, Qt::Vertical);
   // Handles show while their editor is up: a path's with the stages, an
@@ -232,6 +236,9 @@ void MainWindow::showEditor(int part, int index, int move) {
       break;
     case ModelTree::Part::kProbes:
       probes_->list()->setCurrentRow(index);
+      break;
+    case ModelTree::Part::kLoads:
+      loads_->list()->setCurrentRow(index);
       break;
     default:
       break;
@@ -444,6 +451,7 @@ void MainWindow::updateControls() {
   supports_->setEnabled(!running_);
   grippers_->setEnabled(!running_);
   obstacles_->setEnabled(!running_);
+  loads_->setEnabled(!running_);
   probes_->setEnabled(!running_);
   material_->setEnabled(!running_ && model_ != nullptr);
   undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
@@ -634,6 +642,7 @@ void MainWindow::pickNear(const Eigen::Vector3d& point) {
     at.push_back({model_->reference.positions(n, 0), model_->reference.positions(n, 1)});
   supports_->setPickedNodes(picked_, at);
   grippers_->setPickedNodes(picked_, at);
+  loads_->setPickedNodes(picked_, at);
   probes_->setPicked(at);
   updateMarkers();
   statusBar()->showMessage(QString("node %1 %2; %3 nodes picked")
@@ -646,6 +655,7 @@ void MainWindow::clearPicked() {
   picked_.clear();
   supports_->setPickedNodes({}, {});
   grippers_->setPickedNodes({}, {});
+  loads_->setPickedNodes({}, {});
   probes_->setPicked({});
   updateMarkers();
 }

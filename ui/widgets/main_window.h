@@ -30,6 +30,7 @@ namespace drape {
 
 class DragHandles;
 class HoldsPanel;
+class LoadsPanel;
 class ModelTree;
 class ObstaclesPanel;
 class PathHandles;
@@ -59,6 +60,7 @@ class MainWindow : public QMainWindow {
   HoldsPanel* supports() const { return supports_; }
   HoldsPanel* grippers() const { return grippers_; }
   ObstaclesPanel* obstacles() const { return obstacles_; }
+  LoadsPanel* loads() const { return loads_; }
   ProbesPanel* probes() const { return probes_; }
   ModelTree* tree() const { return tree_; }
   ProbePlot* probePlot() const { return probe_plot_; }
@@ -150,6 +152,7 @@ class MainWindow : public QMainWindow {
   StagesPanel* stages_ = nullptr;
   HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;
   ObstaclesPanel* obstacles_ = nullptr;
+  LoadsPanel* loads_ = nullptr;
   ProbesPanel* probes_ = nullptr;
   ModelTree* tree_ = nullptr;
   ProbePlot* probe_plot_ = nullptr;

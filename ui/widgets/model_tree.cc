@@ -94,6 +94,16 @@ void ModelTree::refresh() {
         ToString(s.grippers[i].hold),
         Part::kGrippers,
         static_cast<int>(i));
+  auto* loads = Add(root, "Loads", QString::number(s.loads.size()), Part::kLoads);
+  for (size_t i = 0; i < s.loads.size(); ++i)
+    Add(loads,
+        QString::fromStdString(s.loads[i].name),
+        QString("(%1, %2, %3) N")
+            .arg(s.loads[i].force[0])
+            .arg(s.loads[i].force[1])
+            .arg(s.loads[i].force[2]),
+        Part::kLoads,
+        static_cast<int>(i));
   auto* obstacles = Add(root, "Obstacles", QString::number(s.obstacles.size()), Part::kObstacles);
   for (size_t i = 0; i < s.obstacles.size(); ++i)
     Add(obstacles,

@@ -1,4 +1,4 @@
-// The scene as a tree: fabric, material, supports, grippers, obstacles,
+// The scene as a tree: fabric, material, supports, grippers, loads, obstacles,
 // stages with their moves, probes and solver, each with a one-line summary.
 // Choosing an item says which part of the scene to edit; the main window
 // shows its editor.
@@ -21,7 +21,8 @@ class ModelTree : public QTreeWidget {
     kObstacles,
     kStages,
     kProbes,
-    kSolver
+    kSolver,
+    kLoads  // (shown after the grippers)
   };
 
   explicit ModelTree(SceneDocument* document, QWidget* parent = nullptr);
