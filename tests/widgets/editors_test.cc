@@ -13,6 +13,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
@@ -570,6 +571,35 @@ TEST_F(Widgets, LoadsAreTypedWithUnitsAndAppliedByALoadStage) {
   QUndoStack* undo = doc->undoStack();
   while (undo->canUndo()) undo->undo();
   EXPECT_EQ(doc->scene(), original);
+}
+
+TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  PropertyPanel* panel = window.properties();
+  QComboBox* preset = panel->solverPreset();
+  preset->setCurrentIndex(preset->findData("draft"));
+  emit preset->activated(preset->currentIndex());
+  EXPECT_EQ(doc->scene().solver.tolerance, 1e-3);
+  EXPECT_EQ(panel->tolerance()->edit()->text().toStdString(), "0.001");
+  QLineEdit* tolerance = panel->tolerance()->edit();
+  tolerance->setText("1e-6");
+  emit tolerance->editingFinished();
+  EXPECT_EQ(doc->scene().solver.tolerance, 1e-6);
+  EXPECT_EQ(preset->currentData().toString().toStdString(), "custom");
+  tolerance->setText("2");
+  emit tolerance->editingFinished();
+  EXPECT_EQ(panel->tolerance()->message().toStdString(), "must lie in (0, 1)");
+  EXPECT_EQ(doc->scene().solver.tolerance, 1e-6);
+  panel->maxSteps()->setValue(250);
+  emit panel->maxSteps()->editingFinished();
+  EXPECT_EQ(doc->scene().solver.max_steps, 250);
+  panel->targetIterations()->setValue(4);
+  emit panel->targetIterations()->editingFinished();
+  EXPECT_EQ(doc->scene().solver.target_iterations, 4);
 }
 
 // Garbage typed into every field of every editor: each is refused, the

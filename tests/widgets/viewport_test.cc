@@ -132,8 +132,12 @@ TEST_F(Widgets, WorkbenchShowsEveryStepOfARunInOrder) {
     expected += IsFabric(qRgb(rgb[i], rgb[i + 1], rgb[i + 2]));
   const int fabric = CountFabric(shown);
   std::printf("fabric pixels: viewport %d, offscreen %d\n", fabric, expected);
+  if (getenv("DRAPE_COMPARE_SHOT")) {  // to look at both
+    shown.save(QString(getenv("DRAPE_COMPARE_SHOT")) + "-viewport.png");
+    offscreen.WritePng(std::string(getenv("DRAPE_COMPARE_SHOT")) + "-offscreen.png");
+  }
   EXPECT_GT(expected, 2000);
-  EXPECT_NEAR(fabric, expected, 0.05 * expected);
+  EXPECT_NEAR(fabric, expected, 0.01 * expected);
 }
 
 // "ffprobe" of a movie: "width,height,frames".

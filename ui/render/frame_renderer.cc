@@ -508,6 +508,10 @@ int FrameRenderer::width() const {
 int FrameRenderer::height() const {
   return impl_->options.height;
 }
+void FrameRenderer::FitCamera() {
+  impl_->PlaceCamera();
+}
+
 vtkRenderer* FrameRenderer::renderer() {
   return impl_->renderer;
 }

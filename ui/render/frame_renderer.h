@@ -89,6 +89,9 @@ class FrameRenderer {
   int width() const;
   int height() const;
   vtkRenderer* renderer();
+  // The camera placed again as at the start, fitted to the window's present
+  // shape (after the window was resized, or the user turned the view).
+  void FitCamera();
 
  private:
   struct Impl;

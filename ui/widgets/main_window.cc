@@ -193,6 +193,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateHandles();
   });
   connect(viewport_, &VtkViewport::picked, this, &MainWindow::pickNear);
+  // Until the user turns the view, it keeps the whole run framed as the
+  // window's layout settles or is resized.
+  connect(viewport_, &VtkViewport::cameraTouched, this, [this] { camera_touched_ = true; });
+  connect(viewport_, &VtkViewport::resized, this, [this] {
+    if (!renderer_ || camera_touched_) return;
+    renderer_->FitCamera();
+    viewport_->requestRender();
+  });
   buildActions();
   updateControls();
   resize(1280, 960);
@@ -569,6 +577,7 @@ void MainWindow::rebuildRenderer() {
   renderer_ = std::make_unique<FrameRenderer>(
       scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
   viewport_->doneCurrent();
+  camera_touched_ = false;
   updateHandles();
   updateMarkers();
 }

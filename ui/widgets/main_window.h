@@ -176,7 +176,8 @@ class MainWindow : public QMainWindow {
   QThread* thread_ = nullptr;
   SolverWorker* worker_ = nullptr;
   bool running_ = false, paused_ = false, follow_ = true;
-  bool draw_pending_ = false;  // the newest step is to be drawn
+  bool draw_pending_ = false;    // the newest step is to be drawn
+  bool camera_touched_ = false;  // since the renderer was made
 };
 
 }  // namespace drape

@@ -242,7 +242,33 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
         p.name);
   preset_->addItem("custom", "custom");
   solver_form->addRow("accuracy", preset_);
+  // The preset's numbers, and the run's limits, each its own field.
+  tolerance_ = new QuantityField(
+      dim::kNone,
+      "1e-5",
+      [](double v) { return v > 0 && v < 1 ? QString() : QString("must lie in (0, 1)"); },
+      solver);
+  target_iterations_ = new QSpinBox(solver);
+  target_iterations_->setRange(1, 50);
+  max_steps_ = new QSpinBox(solver);
+  max_steps_->setRange(1, 1000000);
+  max_steps_->setSingleStep(100);
+  solver_form->addRow("tolerance ‖R‖/‖R₀‖", tolerance_);
+  solver_form->addRow("target iterations N_p", target_iterations_);
+  solver_form->addRow("max steps", max_steps_);
   layout->addWidget(solver);
+  connect(tolerance_, &QuantityField::committed, this, edit("tolerance", [](Scene& s, double v) {
+            s.solver.tolerance = v;
+          }));
+  connect(target_iterations_, &QSpinBox::editingFinished, this, [this, edit] {
+    edit("target iterations", [](Scene& s, double v) {
+      s.solver.target_iterations = static_cast<int>(v);
+    })(target_iterations_->value(), QString::number(target_iterations_->value()));
+  });
+  connect(max_steps_, &QSpinBox::editingFinished, this, [this, edit] {
+    edit("max steps", [](Scene& s, double v) { s.solver.max_steps = static_cast<int>(v); })(
+        max_steps_->value(), QString::number(max_steps_->value()));
+  });
   connect(preset_, &QComboBox::activated, this, [this](int i) {
     if (refreshing_ || i >= static_cast<int>(std::size(kPresets))) return;
     Scene after = document_->scene();
@@ -407,6 +433,9 @@ void PropertyPanel::refresh() {
         s.solver.target_iterations == kPresets[i].target_iterations)
       preset = i;
   preset_->setCurrentIndex(preset);
+  tolerance_->setValue(s.solver.tolerance, QString::number(s.solver.tolerance));
+  target_iterations_->setValue(s.solver.target_iterations);
+  max_steps_->setValue(s.solver.max_steps);
   refreshing_ = false;
 }
 

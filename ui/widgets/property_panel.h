@@ -66,6 +66,9 @@ class PropertyPanel : public QWidget {
   QSpinBox* elementsX() const { return nx_; }
   QSpinBox* elementsY() const { return ny_; }
   QComboBox* solverPreset() const { return preset_; }
+  QuantityField* tolerance() const { return tolerance_; }
+  QSpinBox* targetIterations() const { return target_iterations_; }
+  QSpinBox* maxSteps() const { return max_steps_; }
   QLabel* meshInfo() const { return mesh_info_; }
   QString fabricMessage() const;
   QString materialMessage() const;
@@ -105,6 +108,8 @@ class PropertyPanel : public QWidget {
   QFormLayout* material_form_;
   QLabel* material_message_;
   QComboBox* preset_;
+  QuantityField* tolerance_;
+  QSpinBox *target_iterations_, *max_steps_;
   bool refreshing_ = false;
 };
 

@@ -151,6 +151,7 @@ void VtkViewport::resizeGL(int width, int height) {
   const int w = static_cast<int>(width * dpr), h = static_cast<int>(height * dpr);
   window_->SetSize(w, h);
   interactor_->UpdateSize(w, h);
+  emit resized();
 }
 
 void VtkViewport::paintGL() {
@@ -212,6 +213,7 @@ void VtkViewport::mousePressEvent(QMouseEvent* event) {
     if (const auto p = pickSurface(event->position())) emit picked(*p);
     return;
   }
+  emit cameraTouched();  // (or a handle dragged: the view keeps its camera either way)
   switch (event->button()) {
     case Qt::LeftButton:
       ForwardMouse(event, vtkCommand::LeftButtonPressEvent);
@@ -249,6 +251,7 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void VtkViewport::wheelEvent(QWheelEvent* event) {
+  emit cameraTouched();
   const double dpr = devicePixelRatioF();
   const QPointF p = event->position();
   interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr),

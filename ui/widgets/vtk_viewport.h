@@ -56,6 +56,9 @@ class VtkViewport : public QOpenGLWidget {
 
  signals:
   void picked(const Eigen::Vector3d& point);
+  void resized();
+  // The user turned, moved or zoomed the camera (mouse or wheel).
+  void cameraTouched();
 
  protected:
   void initializeGL() override;
