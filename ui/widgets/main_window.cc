@@ -20,6 +20,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QThread>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -203,6 +204,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   buildActions();
   updateControls();
+  // Seven editors share the left dock area: their tabs stand on its side.
+  setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
   resize(1280, 960);
   QSettings settings;
   if (settings.contains("window/geometry"))
