@@ -36,6 +36,7 @@
 #include "ui/widgets/holds_panel.h"
 #include "ui/widgets/loads_panel.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/material_dialog.h"
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/obstacles_panel.h"
@@ -600,6 +601,37 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   panel->targetIterations()->setValue(4);
   emit panel->targetIterations()->editingFinished();
   EXPECT_EQ(doc->scene().solver.target_iterations, 4);
+}
+
+// A run works on the scene it started with: no edit reaches the scene while
+// it goes on — not from a dialog opened before it, not from a script.
+TEST_F(Widgets, NothingEditsTheSceneWhileARunWorksOnIt) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(StripFold()));
+  SceneDocument* doc = window.document();
+  MaterialDialog dialog(doc);  // opened before the run
+  QSignalSpy finished(&window, &MainWindow::runFinished);
+  window.run();
+  window.pauseOrResume();
+  const Scene running = doc->scene();
+  dialog.library()->setCurrentText("cotton-twill");
+  EXPECT_FALSE(dialog.applyLibrary());
+  EXPECT_NE(dialog.message().toStdString().find("a run is working on the scene"), std::string::npos)
+      << dialog.message().toStdString();
+  Scene thicker = running;
+  thicker.material.thickness *= 2;
+  QString problem;
+  EXPECT_FALSE(doc->tryApply("thickness", thicker, &problem));
+  doc->apply("thickness", thicker);
+  EXPECT_EQ(doc->scene(), running);
+  EXPECT_FALSE(window.properties()->isEnabled());
+  window.stop();
+  ASSERT_TRUE(finished.count() > 0 || finished.wait(30000));
+  // Afterwards the same edits go through.
+  EXPECT_TRUE(dialog.applyLibrary()) << dialog.message().toStdString();
+  EXPECT_TRUE(doc->tryApply("thickness", thicker, &problem)) << problem.toStdString();
 }
 
 // Garbage typed into every field of every editor: each is refused, the

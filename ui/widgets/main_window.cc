@@ -19,8 +19,8 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QThread>
 #include <QTabWidget>
+#include <QThread>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -886,6 +886,7 @@ void MainWindow::run() {
   connect(worker_, &SolverWorker::failed, this, &MainWindow::onFailed, Qt::QueuedConnection);
   thread_->start();
   running_ = true;
+  document_->setLocked(true);
   paused_ = false;
   updateControls();
   statusBar()->showMessage("running…");
@@ -933,6 +934,7 @@ void MainWindow::onStep(std::shared_ptr<const StepState> step) {
 
 void MainWindow::onFinished(const SolveSummary& summary) {
   running_ = false;
+  document_->setLocked(false);
   paused_ = false;
   thread_->quit();
   thread_->wait();

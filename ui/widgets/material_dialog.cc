@@ -243,7 +243,12 @@ bool MaterialDialog::applyLibrary() {
     Scene after = document_->scene();
     after.material =
         SceneFromJson(nlohmann::json::parse(doc.dump()), document_->directory()).material;
-    document_->apply("material " + library_->currentText(), after);
+    QString problem;
+    if (!document_->tryApply("material " + library_->currentText(), after, &problem)) {
+      message_->setStyleSheet("color: #b00020");
+      message_->setText(problem);
+      return false;
+    }
     return true;
   } catch (const std::exception& e) {
     message_->setStyleSheet("color: #b00020");

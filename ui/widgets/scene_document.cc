@@ -70,7 +70,7 @@ void SceneDocument::saveAs(const QString& file) {
 }
 
 void SceneDocument::apply(const QString& what, const Scene& after) {
-  if (after == scene_) return;
+  if (locked_ || after == scene_) return;
   undo_.push(new SceneEdit(this, what, scene_, after));
 }
 
@@ -93,7 +93,9 @@ QString SceneDocument::check(const Scene& after) const {
 }
 
 bool SceneDocument::tryApply(const QString& what, const Scene& after, QString* problem) {
-  const QString wrong = check(after);
+  const QString wrong =
+      locked_ ? QString("a run is working on the scene: stop it or let it finish to edit")
+              : check(after);
   if (problem) *problem = wrong;
   if (!wrong.isEmpty()) return false;
   apply(what, after);

@@ -34,8 +34,13 @@ class SceneDocument : public QObject {
   // written as absolute paths, so the scene still finds them.
   void saveAs(const QString& file);
   // An edit named `what` ("thickness 0.5 mm"): undoable; nothing happens
-  // when `after` equals the scene.
+  // when `after` equals the scene, or while the document is locked.
   void apply(const QString& what, const Scene& after);
+
+  // Locked while a run works on the scene: every edit is refused (tryApply
+  // says why), so no editor, dialog or script can change it under the run.
+  void setLocked(bool locked) { locked_ = locked; }
+  bool isLocked() const { return locked_; }
 
   // The folder the scene's relative file references are resolved in.
   std::filesystem::path directory() const;
@@ -59,6 +64,7 @@ class SceneDocument : public QObject {
   QString file_;
   QString origin_;  // the folder the scene's relative references are in
   QUndoStack undo_;
+  bool locked_ = false;
 };
 
 }  // namespace drape
