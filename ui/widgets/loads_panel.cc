@@ -20,14 +20,6 @@
 #include "ui/widgets/typed_json.h"
 
 namespace drape {
-namespace {
-
-QString Text(const Vec3& v) {
-  return QString("%1, %2, %3").arg(v[0]).arg(v[1]).arg(v[2]);
-}
-
-}  // namespace
-
 LoadsPanel::LoadsPanel(SceneDocument* document, QWidget* parent)
     : QWidget(parent), document_(document) {
   auto* layout = new QVBoxLayout(this);
@@ -142,15 +134,15 @@ void LoadsPanel::refresh() {
     list_->clear();
     for (const PointLoad& l : s.loads)
       list_->addItem(QString("%1: (%2) N on %3")
-                         .arg(QString::fromStdString(l.name), Text(l.force))
+                         .arg(QString::fromStdString(l.name), ListText(l.force))
                          .arg(DescribeSelection(l.select)));
     if (!s.loads.empty())
       list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.loads.size()) - 1));
   }
   const int i = list_->currentRow();
   if (i >= 0) {
-    force_->setText(Text(s.loads[i].force));
-    moment_->setText(Text(s.loads[i].moment));
+    force_->setText(ListText(s.loads[i].force));
+    moment_->setText(ListText(s.loads[i].moment));
   }
 }
 

@@ -20,10 +20,6 @@
 namespace drape {
 namespace {
 
-QString Text(const Vec3& v) {
-  return QString("%1, %2, %3").arg(v[0]).arg(v[1]).arg(v[2]);
-}
-
 QString KindOf(const Path& path) {
   return std::visit(Overloaded{[](const LinePath&) { return QString("line"); },
                                [](const ArcPath&) { return QString("arc"); },
@@ -34,16 +30,19 @@ QString KindOf(const Path& path) {
 QString Describe(const Move& m) {
   const QString what = m.gripper.empty() ? "obstacle " + QString::fromStdString(m.obstacle)
                                          : QString::fromStdString(m.gripper);
-  return std::visit(
-      Overloaded{
-          [&](const LinePath& p) { return QString("%1: line by (%2) m").arg(what, Text(p.by)); },
-          [&](const ArcPath& p) {
-            return QString("%1: arc %2° about (%3)").arg(what).arg(p.angle_deg).arg(Text(p.axis));
-          },
-          [&](const KeyframesPath& p) {
-            return QString("%1: %2 keyframes").arg(what).arg(p.points.size());
-          }},
-      m.path);
+  return std::visit(Overloaded{[&](const LinePath& p) {
+                                 return QString("%1: line by (%2) m").arg(what, ListText(p.by));
+                               },
+                               [&](const ArcPath& p) {
+                                 return QString("%1: arc %2° about (%3)")
+                                     .arg(what)
+                                     .arg(p.angle_deg)
+                                     .arg(ListText(p.axis));
+                               },
+                               [&](const KeyframesPath& p) {
+                                 return QString("%1: %2 keyframes").arg(what).arg(p.points.size());
+                               }},
+                    m.path);
 }
 
 }  // namespace
@@ -224,15 +223,15 @@ void MoveEditor::refresh() {
     const Path& path = moves[m].path;
     kind_->setCurrentText(KindOf(path));
     ShowKind(KindOf(path));
-    std::visit(Overloaded{[&](const LinePath& p) { first_->setText(Text(p.by)); },
+    std::visit(Overloaded{[&](const LinePath& p) { first_->setText(ListText(p.by)); },
                           [&](const ArcPath& p) {
-                            first_->setText(Text(p.center));
-                            second_->setText(Text(p.axis));
+                            first_->setText(ListText(p.center));
+                            second_->setText(ListText(p.axis));
                             third_->setText(QString::number(p.angle_deg));
                           },
                           [&](const KeyframesPath& p) {
                             QStringList points;
-                            for (const Vec3& v : p.points) points << Text(v);
+                            for (const Vec3& v : p.points) points << ListText(v);
                             first_->setText(points.join("; "));
                             second_->setText(ToString(p.interpolation));
                           }},

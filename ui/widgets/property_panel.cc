@@ -85,10 +85,6 @@ QString Positive(double v) {
 QString NonNegative(double v) {
   return v >= 0 && std::isfinite(v) ? QString() : "must be ≥ 0";
 }
-QString Text(const Vec2& v) {
-  return QString("%1, %2").arg(v[0]).arg(v[1]);
-}
-
 // SI value and unit as the field shows a value it did not type.
 QString Si(double v, const char* unit) {
   return QString("%1 %2").arg(v, 0, 'g', 6).arg(unit);
@@ -366,18 +362,18 @@ void PropertyPanel::refresh() {
   const bool by_count = rectangle && s.fabric.mesh.elements.has_value();
   std::visit(Overloaded{[&](const RectangleOutline& r) {
                           shape_->setCurrentText("rectangle");
-                          extent_->setText(Text(r.size));
-                          center_->setText(Text(r.center));
+                          extent_->setText(ListText(r.size));
+                          center_->setText(ListText(r.center));
                         },
                         [&](const DiskOutline& d) {
                           shape_->setCurrentText("disk");
                           extent_->setText(QString::number(d.radius));
-                          center_->setText(Text(d.center));
+                          center_->setText(ListText(d.center));
                         },
                         [&](const PolygonOutline& p) {
                           shape_->setCurrentText("polygon");
                           QStringList vertices;
-                          for (const Vec2& v : p.vertices) vertices << Text(v);
+                          for (const Vec2& v : p.vertices) vertices << ListText(v);
                           extent_->setText(vertices.join("; "));
                         }},
              s.fabric.outline);

@@ -23,4 +23,12 @@ nlohmann::json TypedLists(const QString& text) {
   return lists;
 }
 
+QString ListText(const std::array<double, 2>& v) {
+  return QString("%1, %2").arg(v[0]).arg(v[1]);
+}
+
+QString ListText(const std::array<double, 3>& v) {
+  return QString("%1, %2, %3").arg(v[0]).arg(v[1]).arg(v[2]);
+}
+
 }  // namespace drape

@@ -7,10 +7,16 @@
 #include <QString>
 #include <nlohmann/json.hpp>
 
+#include <array>
+
 namespace drape {
 
 nlohmann::json TypedQuantity(const QString& text);
 nlohmann::json TypedList(const QString& text);   // comma separated
 nlohmann::json TypedLists(const QString& text);  // ';' between lists
+
+// The other way: SI numbers as a field shows them, "0.1, 0, 0.02".
+QString ListText(const std::array<double, 2>& v);
+QString ListText(const std::array<double, 3>& v);
 
 }  // namespace drape
