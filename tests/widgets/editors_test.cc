@@ -420,6 +420,19 @@ TEST_F(Widgets, ObstaclesAreAddedEditedAsJsonAndDraggedInTheView) {
   QTest::qWait(50);
   EXPECT_EQ(handle->count(), 1);
 
+  // The contact: penalty and friction, read by the reader.
+  ASSERT_TRUE(panel->setContact("auto", "0.3")) << panel->message().toStdString();
+  ASSERT_TRUE(doc->scene().contact.has_value());
+  EXPECT_EQ(doc->scene().contact->friction, 0.3);
+  EXPECT_FALSE(doc->scene().contact->penalty.has_value());
+  ASSERT_TRUE(panel->setContact("2e8 N/m^3", "0.3"));
+  EXPECT_EQ(*doc->scene().contact->penalty, 2e8);
+  EXPECT_FALSE(panel->setContact("auto", "-1"));
+  EXPECT_NE(panel->message().toStdString().find("must not be negative"), std::string::npos)
+      << panel->message().toStdString();
+  EXPECT_FALSE(panel->setContact("2e8 N", "0.3"));  // not a penalty per area
+  EXPECT_EQ(doc->scene().contact->friction, 0.3);
+
   // Removing the table a stage does not move: allowed, and undone.
   panel->list()->setCurrentRow(0);
   ASSERT_TRUE(panel->removeSelected()) << panel->message().toStdString();

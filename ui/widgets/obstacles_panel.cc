@@ -1,8 +1,10 @@
 #include "ui/widgets/obstacles_panel.h"
 
 #include <QComboBox>
+#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -16,6 +18,7 @@
 #include "core/model/scene_error.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/typed_json.h"
 
 namespace drape {
 namespace {
@@ -50,6 +53,19 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   layout->addWidget(text_, 1);
   auto* apply = new QPushButton("Apply", this);
   layout->addWidget(apply);
+  auto* contact = new QFormLayout;
+  penalty_ = new QLineEdit(this);
+  penalty_->setToolTip("\"auto\" (from the fabric's stiffness) or a value, e.g. 1e8 N/m^3");
+  friction_ = new QLineEdit(this);
+  friction_->setToolTip("Coulomb coefficient μ, 0 for frictionless");
+  contact->addRow("contact penalty", penalty_);
+  contact->addRow("friction μ", friction_);
+  layout->addLayout(contact);
+  for (QLineEdit* e : {penalty_, friction_})
+    connect(e, &QLineEdit::editingFinished, this, [this] {
+      if (penalty_->text() != penalty_shown_ || friction_->text() != friction_shown_)
+        setContact(penalty_->text(), friction_->text());
+    });
   message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] { this->add(kind_->currentText()); });
@@ -105,6 +121,25 @@ bool ObstaclesPanel::applyText(const QString& text) {
   return Apply("edit " + QString::fromStdString(after.obstacles[i].name), after);
 }
 
+bool ObstaclesPanel::setContact(const QString& penalty, const QString& friction) {
+  nlohmann::json document = nlohmann::json::parse(SceneToJson(document_->scene()).dump());
+  document["contact"] = {
+      {"penalty", penalty.trimmed() == "auto" ? nlohmann::json("auto") : TypedQuantity(penalty)},
+      {"friction", TypedQuantity(friction)}};
+  Scene after;
+  try {
+    after = document_->parse(document);
+  } catch (const SceneError& e) {
+    message_->setText(QString::fromStdString(e.what()));
+    refresh();  // the fields show the scene's values again
+    return false;
+  }
+  const bool done =
+      Apply(QString("contact: penalty %1, friction %2").arg(penalty, friction), after);
+  if (!done) refresh();
+  return done;
+}
+
 void ObstaclesPanel::refresh() {
   const Scene& s = document_->scene();
   const int row = list_->currentRow();
@@ -126,6 +161,11 @@ void ObstaclesPanel::refresh() {
   text_->setPlainText(i >= 0 ? QString::fromStdString(FormatJson(SceneToJson(s)["obstacles"][i]))
                              : QString());
   text_->setEnabled(i >= 0);
+  const Contact contact = s.contact.value_or(Contact{});
+  penalty_shown_ = contact.penalty ? QString("%1 N/m^3").arg(*contact.penalty) : "auto";
+  friction_shown_ = QString::number(contact.friction);
+  penalty_->setText(penalty_shown_);
+  friction_->setText(friction_shown_);
   emit obstacleSelected(i);
 }
 

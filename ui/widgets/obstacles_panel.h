@@ -1,14 +1,15 @@
 // The rigid obstacles of a scene: add a table, block, rod or sphere, edit
 // one as the scene file writes it (JSON, units allowed: "5 cm"), remove
-// one. The text is read by the scene reader, so a wrong key or value gets
-// the reader's message naming it. The selected obstacle also gets a handle
-// in the viewport to move it (MainWindow).
+// one; and the contact's penalty and friction. The text is read by the scene reader, so a wrong key
+// or value gets the reader's message naming it. The selected obstacle also gets a handle in the
+// viewport to move it (MainWindow).
 #pragma once
 
 #include <QWidget>
 
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QListWidget;
 class QPlainTextEdit;
 
@@ -31,6 +32,9 @@ class ObstaclesPanel : public QWidget {
   bool removeSelected();
   // The selected obstacle from its JSON text.
   bool applyText(const QString& json);
+  // How the fabric touches every obstacle: penalty k per area ("auto" or,
+  // e.g., "1e8 N/m^3") and Coulomb friction μ.
+  bool setContact(const QString& penalty, const QString& friction);
 
  public slots:
   void refresh();
@@ -45,6 +49,8 @@ class ObstaclesPanel : public QWidget {
   QListWidget* list_;
   QComboBox* kind_;
   QPlainTextEdit* text_;
+  QLineEdit *penalty_, *friction_;
+  QString penalty_shown_, friction_shown_;  // as refresh() wrote them
   QLabel* message_;
 };
 
