@@ -364,6 +364,20 @@ TEST_F(Widgets, OutlinesAreEditedAsRectangleDiskOrPolygon) {
       << panel->fabricMessage().toStdString();
   EXPECT_EQ(doc->scene(), before);
 
+  // An imperfection of 0.1 mm, node by node: every node within it, and the
+  // flat part no longer flat.
+  ASSERT_TRUE(panel->setImperfection("0.1 mm", 7, "nodal")) << panel->fabricMessage().toStdString();
+  ASSERT_TRUE(doc->scene().fabric.imperfection.has_value());
+  EXPECT_EQ(doc->scene().fabric.imperfection->seed, 7u);
+  const Eigen::VectorXd z = BuildShellModel(doc->scene()).reference.positions.col(2);
+  EXPECT_LE(z.cwiseAbs().maxCoeff(), 1e-4);
+  EXPECT_GT(z.cwiseAbs().maxCoeff(), 0.5e-4);
+  EXPECT_FALSE(panel->setImperfection("0.1 kg", 7, "nodal"));
+  EXPECT_NE(panel->fabricMessage().toStdString().find("amplitude"), std::string::npos)
+      << panel->fabricMessage().toStdString();
+  ASSERT_TRUE(panel->setImperfection("0", 7, "nodal"));
+  EXPECT_FALSE(doc->scene().fabric.imperfection.has_value());
+
   QUndoStack* undo = doc->undoStack();
   while (undo->canUndo()) undo->undo();
   EXPECT_EQ(doc->scene(), original);

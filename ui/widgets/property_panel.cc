@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
@@ -123,7 +124,32 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   fabric_form->addRow("elements along x", nx_);
   fabric_form->addRow("elements along y", ny_);
   fabric_form->addRow("element size", element_size_);
+  imperfection_ = new QLineEdit(fabric);
+  imperfection_->setToolTip("largest out-of-plane offset, e.g. 0.05 mm; 0 for a flat part");
+  seed_ = new QSpinBox(fabric);
+  seed_->setRange(0, 1000000);
+  pattern_ = new QComboBox(fabric);
+  pattern_->addItems({"smooth", "nodal"});
+  pattern_->setToolTip("smooth: random plane waves (the same at any mesh); nodal: each node");
+  auto* imperfection_row = new QHBoxLayout;
+  imperfection_row->addWidget(imperfection_, 1);
+  imperfection_row->addWidget(new QLabel("seed", fabric));
+  imperfection_row->addWidget(seed_);
+  imperfection_row->addWidget(pattern_);
+  fabric_form->addRow("imperfection", imperfection_row);
   fabric_form->addRow(mesh_info_);
+  connect(imperfection_, &QLineEdit::editingFinished, this, [this] {
+    if (!refreshing_)
+      setImperfection(imperfection_->text(), seed_->value(), pattern_->currentText());
+  });
+  connect(seed_, &QSpinBox::editingFinished, this, [this] {
+    if (!refreshing_)
+      setImperfection(imperfection_->text(), seed_->value(), pattern_->currentText());
+  });
+  connect(pattern_, &QComboBox::activated, this, [this] {
+    if (!refreshing_)
+      setImperfection(imperfection_->text(), seed_->value(), pattern_->currentText());
+  });
   fabric_form->addRow(fabric_message_);
   fabric_form_ = fabric_form;
   layout->addWidget(fabric);
@@ -315,6 +341,7 @@ bool PropertyPanel::ApplyFabric(const QString& what, const nlohmann::json& fabri
     problem = QString::fromStdString(e.what());
   }
   fabric_message_->setText(problem);
+  if (!problem.isEmpty()) refresh();  // the fields show the scene's fabric again
   return problem.isEmpty();
 }
 
@@ -340,6 +367,21 @@ bool PropertyPanel::setOutline(const QString& shape, const QString& extent, cons
   if (shape == "rectangle" && !was_rectangle && !fabric["mesh"].contains("elements"))
     fabric["mesh"] = {{"elements", {20, 20}}};
   return ApplyFabric(QString("%1 outline %2").arg(shape, extent), fabric);
+}
+
+bool PropertyPanel::setImperfection(const QString& amplitude, int seed, const QString& pattern) {
+  nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
+  const nlohmann::json a = TypedQuantity(amplitude);
+  if (amplitude.trimmed().isEmpty() || (a.is_number() && a.get<double>() == 0.0)) {
+    fabric.erase("imperfection");
+  } else {
+    nlohmann::json spec = fabric.value("imperfection", nlohmann::json::object());
+    spec["amplitude"] = a;
+    spec["seed"] = static_cast<std::uint64_t>(seed);
+    spec["pattern"] = pattern.toStdString();
+    fabric["imperfection"] = spec;
+  }
+  return ApplyFabric("imperfection " + amplitude, fabric);
 }
 
 bool PropertyPanel::setElementSize(const QString& size) {
@@ -393,6 +435,14 @@ void PropertyPanel::refresh() {
     ny_->setValue((*s.fabric.mesh.elements)[1]);
   }
   element_size_->setText(s.fabric.mesh.size ? Si(*s.fabric.mesh.size, "m") : QString());
+  if (s.fabric.imperfection) {
+    imperfection_->setText(Si(s.fabric.imperfection->amplitude, "m"));
+    seed_->setValue(static_cast<int>(s.fabric.imperfection->seed));
+    pattern_->setCurrentIndex(s.fabric.imperfection->pattern == ImperfectionPattern::kSmooth ? 0
+                                                                                             : 1);
+  } else {
+    imperfection_->setText("0");
+  }
   // The count of the mesh the engine will make (Gmsh's for curved outlines).
   try {
     const Mesh mesh = MeshFabric(s.fabric);

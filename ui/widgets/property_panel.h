@@ -88,6 +88,9 @@ class PropertyPanel : public QWidget {
   bool setOutline(const QString& shape, const QString& extent, const QString& center = "0, 0");
   // The target element edge of outlines meshed by size.
   bool setElementSize(const QString& size);
+  // A small out-of-plane imperfection of the flat part (to start buckling):
+  // amplitude (typed, "0" for none), seed, pattern "smooth" or "nodal".
+  bool setImperfection(const QString& amplitude, int seed, const QString& pattern);
 
  public slots:
   void refresh();  // from the document's scene
@@ -99,7 +102,9 @@ class PropertyPanel : public QWidget {
   SceneDocument* document_;
   QFormLayout* fabric_form_;
   QComboBox* shape_;
-  QLineEdit *extent_, *center_, *element_size_;
+  QLineEdit *extent_, *center_, *element_size_, *imperfection_;
+  QSpinBox* seed_;
+  QComboBox* pattern_;
   QSpinBox *nx_, *ny_;
   QLabel *mesh_info_, *fabric_message_;
   QuantityField *thickness_, *weight_, *modulus_, *poisson_, *angle_;
