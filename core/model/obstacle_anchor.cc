@@ -1,13 +1,11 @@
 #include "core/model/obstacle_anchor.h"
 
 #include "core/model/overloaded.h"
+#include "core/model/vec3_eigen.h"
 
 namespace drape {
 namespace {
 
-Eigen::Vector3d V(const Vec3& v) {
-  return {v[0], v[1], v[2]};
-}
 void Add(Vec3& v, const Eigen::Vector3d& by) {
   for (int i = 0; i < 3; ++i) v[i] += by[i];
 }
@@ -17,12 +15,12 @@ void Add(Vec3& v, const Eigen::Vector3d& by) {
 std::optional<Eigen::Vector3d> ObstacleAnchor(const Obstacle& obstacle) {
   return std::visit(
       Overloaded{
-          [](const PlaneShape& p) -> std::optional<Eigen::Vector3d> { return V(p.point); },
+          [](const PlaneShape& p) -> std::optional<Eigen::Vector3d> { return ToEigen(p.point); },
           [](const BoxShape& b) -> std::optional<Eigen::Vector3d> {
-            return 0.5 * (V(b.min) + V(b.max));
+            return 0.5 * (ToEigen(b.min) + ToEigen(b.max));
           },
-          [](const CylinderShape& c) -> std::optional<Eigen::Vector3d> { return V(c.point); },
-          [](const SphereShape& s) -> std::optional<Eigen::Vector3d> { return V(s.center); },
+          [](const CylinderShape& c) -> std::optional<Eigen::Vector3d> { return ToEigen(c.point); },
+          [](const SphereShape& s) -> std::optional<Eigen::Vector3d> { return ToEigen(s.center); },
           [](const MeshShape&) -> std::optional<Eigen::Vector3d> { return std::nullopt; },
       },
       obstacle.shape);

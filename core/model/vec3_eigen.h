@@ -12,4 +12,8 @@ inline Eigen::Vector3d ToEigen(const Vec3& v) {
   return {v[0], v[1], v[2]};
 }
 
+inline Vec3 ToVec3(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
 }  // namespace drape

@@ -6,18 +6,12 @@
 #include <string>
 
 #include "core/model/overloaded.h"
+#include "core/model/vec3_eigen.h"
 #include "core/solve/prescribed_motion.h"
 #include "core/solve/shell_model.h"
 
 namespace drape {
 namespace {
-
-Eigen::Vector3d V(const Vec3& v) {
-  return {v[0], v[1], v[2]};
-}
-Vec3 A(const Eigen::Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
-}
 
 void CheckHandle(int handle, size_t count) {
   if (handle < 0 || static_cast<size_t>(handle) >= count)
@@ -81,16 +75,17 @@ std::vector<Eigen::Vector3d> SamplePath(const Path& path,
 std::vector<Eigen::Vector3d> PathHandlePoints(const Path& path, const Eigen::Vector3d& start) {
   return std::visit(
       Overloaded{
-          [&](const LinePath& p) { return std::vector<Eigen::Vector3d>{start + V(p.by)}; },
+          [&](const LinePath& p) { return std::vector<Eigen::Vector3d>{start + ToEigen(p.by)}; },
           [&](const ArcPath& p) {
-            const Eigen::Vector3d c = V(p.center);
-            return std::vector<Eigen::Vector3d>{c,
-                                                MotionAt(p, 1.0).Apply(start),
-                                                c + AxisLength(c, start) * V(p.axis).normalized()};
+            const Eigen::Vector3d c = ToEigen(p.center);
+            return std::vector<Eigen::Vector3d>{
+                c,
+                MotionAt(p, 1.0).Apply(start),
+                c + AxisLength(c, start) * ToEigen(p.axis).normalized()};
           },
           [&](const KeyframesPath& p) {
             std::vector<Eigen::Vector3d> points;
-            for (const Vec3& k : p.points) points.push_back(start + V(k));
+            for (const Vec3& k : p.points) points.push_back(start + ToEigen(k));
             return points;
           },
       },
@@ -104,25 +99,26 @@ Path MovePathHandle(const Path& path,
   return std::visit(Overloaded{
                         [&](LinePath p) -> Path {
                           CheckHandle(handle, 1);
-                          p.by = A(to - start);
+                          p.by = ToVec3(to - start);
                           return p;
                         },
                         [&](ArcPath p) -> Path {
                           CheckHandle(handle, 3);
-                          const Eigen::Vector3d c = V(p.center);
+                          const Eigen::Vector3d c = ToEigen(p.center);
                           if (handle == 0) {
-                            p.center = A(to);
+                            p.center = ToVec3(to);
                           } else if (handle == 1) {
-                            p.angle_deg = AngleAbout(V(p.axis), start - c, to - c, p.angle_deg);
+                            p.angle_deg =
+                                AngleAbout(ToEigen(p.axis), start - c, to - c, p.angle_deg);
                           } else if ((to - c).norm() > 1e-9 * AxisLength(c, start)) {
                             // (A tip dropped on the centre has no direction.)
-                            p.axis = A((to - c).normalized());
+                            p.axis = ToVec3((to - c).normalized());
                           }
                           return p;
                         },
                         [&](KeyframesPath p) -> Path {
                           CheckHandle(handle, p.points.size());
-                          p.points[static_cast<size_t>(handle)] = A(to - start);
+                          p.points[static_cast<size_t>(handle)] = ToVec3(to - start);
                           return p;
                         },
                     },
