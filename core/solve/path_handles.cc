@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "core/model/obstacle_anchor.h"
 #include "core/model/overloaded.h"
 #include "core/model/vec3_eigen.h"
 #include "core/solve/prescribed_motion.h"
@@ -40,7 +42,7 @@ double AxisLength(const Eigen::Vector3d& center, const Eigen::Vector3d& start) {
 
 }  // namespace
 
-std::vector<GripperMove> GripperMoves(const Scene& scene, const ShellModel& model) {
+std::vector<CarriedMove> GripperMoves(const Scene& scene, const ShellModel& model) {
   std::vector<Eigen::Vector3d> at(model.grippers.size(), Eigen::Vector3d::Zero());
   for (size_t g = 0; g < model.grippers.size(); ++g) {
     for (int node : model.grippers[g].nodes)
@@ -48,7 +50,7 @@ std::vector<GripperMove> GripperMoves(const Scene& scene, const ShellModel& mode
     if (!model.grippers[g].nodes.empty())
       at[g] /= static_cast<double>(model.grippers[g].nodes.size());
   }
-  std::vector<GripperMove> moves;
+  std::vector<CarriedMove> moves;
   for (size_t s = 0; s < scene.stages.size(); ++s)
     for (size_t m = 0; m < scene.stages[s].moves.size(); ++m) {
       const Move& move = scene.stages[s].moves[m];
@@ -59,6 +61,25 @@ std::vector<GripperMove> GripperMoves(const Scene& scene, const ShellModel& mode
       const size_t g = static_cast<size_t>(it - model.grippers.begin());
       moves.push_back({static_cast<int>(s), static_cast<int>(m), move.gripper, at[g]});
       at[g] = MotionAt(move.path, 1.0).Apply(at[g]);
+    }
+  return moves;
+}
+
+std::vector<CarriedMove> ObstacleMoves(const Scene& scene) {
+  std::vector<std::optional<Eigen::Vector3d>> at;
+  for (const Obstacle& o : scene.obstacles) at.push_back(ObstacleAnchor(o));
+  std::vector<CarriedMove> moves;
+  for (size_t s = 0; s < scene.stages.size(); ++s)
+    for (size_t m = 0; m < scene.stages[s].moves.size(); ++m) {
+      const Move& move = scene.stages[s].moves[m];
+      const auto it = std::find_if(scene.obstacles.begin(),
+                                   scene.obstacles.end(),
+                                   [&](const Obstacle& o) { return o.name == move.obstacle; });
+      if (move.obstacle.empty() || it == scene.obstacles.end()) continue;
+      auto& anchor = at[static_cast<size_t>(it - scene.obstacles.begin())];
+      if (!anchor) continue;
+      moves.push_back({static_cast<int>(s), static_cast<int>(m), move.obstacle, *anchor});
+      anchor = MotionAt(move.path, 1.0).Apply(*anchor);
     }
   return moves;
 }

@@ -20,17 +20,20 @@ namespace drape {
 
 struct ShellModel;
 
-// A stage's move of a gripper and where the gripper's held nodes' centroid
-// is when that stage begins (after every earlier move of it).
-struct GripperMove {
+// A stage's move of a gripper or an obstacle and where the carried point
+// is when that stage begins (after every earlier move of it): the
+// gripper's held nodes' centroid, or the obstacle's anchor (ObstacleAnchor).
+struct CarriedMove {
   int stage = 0, move = 0;  // indices into scene.stages and its moves
-  std::string gripper;
+  std::string carried;      // the gripper's or the obstacle's name
   Eigen::Vector3d start = Eigen::Vector3d::Zero();
 };
 
-// Every gripper move of the scene in stage order (moves of obstacles and of
-// grippers the model does not hold are left out).
-std::vector<GripperMove> GripperMoves(const Scene& scene, const ShellModel& model);
+// Every gripper move of the scene in stage order (grippers the model does
+// not hold are left out).
+std::vector<CarriedMove> GripperMoves(const Scene& scene, const ShellModel& model);
+// Every obstacle move in stage order (meshes, which have no anchor, left out).
+std::vector<CarriedMove> ObstacleMoves(const Scene& scene);
 
 // The held point's way along `path` from `start`, at samples + 1 equal steps
 // of λ (for drawing the path).

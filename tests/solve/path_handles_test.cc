@@ -108,7 +108,7 @@ TEST(PathHandles, EachMoveStartsWhereTheGrippersLastMoveEnded) {
   ASSERT_EQ(moves.size(), 2u);
   const double c = 0.02345e-2;
   EXPECT_EQ(moves[0].stage, 1);
-  EXPECT_EQ(moves[0].gripper, "end");
+  EXPECT_EQ(moves[0].carried, "end");
   EXPECT_LT((moves[0].start - Eigen::Vector3d(-0.1, 0, 0)).norm(), 1e-12);
   EXPECT_EQ(moves[1].stage, 2);
   EXPECT_EQ(moves[1].move, 0);
@@ -116,6 +116,21 @@ TEST(PathHandles, EachMoveStartsWhereTheGrippersLastMoveEnded) {
   const auto line = SamplePath(scene.stages[2].moves[0].path, moves[1].start, 4);
   ASSERT_EQ(line.size(), 5u);
   EXPECT_LT((line[2] - Eigen::Vector3d(0.105, 0, 2 * c)).norm(), 1e-12);
+}
+
+TEST(PathHandles, ObstacleMovesStartAtTheAnchorWhereEarlierMovesLeftIt) {
+  Scene scene = ReadScene(DRAPE_SOURCE_DIR "/resources/scenes/strip-fold.json");
+  // The table (its point at z = −c) lowered 1 cm by the fold stage, then
+  // moved 2 cm along x by the slide.
+  scene.stages[1].moves.push_back({"", LinePath{{0, 0, -0.01}}, "table"});
+  scene.stages[2].moves.push_back({"", LinePath{{0.02, 0, 0}}, "table"});
+  const auto moves = ObstacleMoves(scene);
+  ASSERT_EQ(moves.size(), 2u);
+  const double c = 0.02345e-2;
+  EXPECT_EQ(moves[0].carried, "table");
+  EXPECT_EQ(moves[0].move, 1);
+  EXPECT_LT((moves[0].start - Eigen::Vector3d(0, 0, -c)).norm(), 1e-15);
+  EXPECT_LT((moves[1].start - Eigen::Vector3d(0, 0, -c - 0.01)).norm(), 1e-15);
 }
 
 }  // namespace

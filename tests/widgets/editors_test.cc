@@ -181,7 +181,10 @@ TEST_F(Widgets, MovesAreTypedWithUnitsAndReadByTheSceneReader) {
   ASSERT_TRUE(moves->addMove("obstacle table")) << moves->message().toStdString();
   ASSERT_EQ(doc->scene().stages[2].moves.size(), 2u);
   EXPECT_EQ(doc->scene().stages[2].moves[1].obstacle, "table");
-  EXPECT_EQ(window.pathHandles()->count(), 0);  // handles are for grippers' paths
+  // Its handle: the table's point (z = −c) carried 5 cm up.
+  ASSERT_EQ(window.pathHandles()->count(), 1);
+  EXPECT_LT((window.pathHandles()->position(0) - Eigen::Vector3d(0, 0, 0.05 - 0.02345e-2)).norm(),
+            1e-12);
   ASSERT_TRUE(moves->setPath("line", "0, 0, -1 cm"));
   ASSERT_TRUE(moves->removeSelected());
   EXPECT_EQ(doc->scene().stages[2].moves.size(), 1u);

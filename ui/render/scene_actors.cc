@@ -157,7 +157,7 @@ vtkSmartPointer<vtkPolyData> ObstacleSurface(const Obstacle& obstacle,
 std::vector<std::vector<Eigen::Vector3d>> GripperPaths(const Scene& scene,
                                                        const ShellModel& model) {
   std::vector<std::vector<Eigen::Vector3d>> paths;
-  for (const GripperMove& m : GripperMoves(scene, model))
+  for (const CarriedMove& m : GripperMoves(scene, model))
     paths.push_back(SamplePath(scene.stages[m.stage].moves[m.move].path, m.start));
   return paths;
 }

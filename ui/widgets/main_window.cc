@@ -593,10 +593,15 @@ void MainWindow::updateHandles() {
   obstacle_handles_->clear();
   viewport_->requestRender();
   if (running_ || !renderer_) return;
-  if (stages_shown_)
-    for (const GripperMove& m : GripperMoves(scene_, *model_))
+  if (stages_shown_) {
+    // A gripper's path or an obstacle's: each starts where its carried
+    // point is when the stage begins.
+    std::vector<CarriedMove> moves = GripperMoves(scene_, *model_);
+    for (const CarriedMove& m : ObstacleMoves(scene_)) moves.push_back(m);
+    for (const CarriedMove& m : moves)
       if (m.stage == handle_stage_ && m.move == handle_move_)
         handles_->show(renderer_->renderer(), scene_.stages[m.stage].moves[m.move].path, m.start);
+  }
   if (obstacles_shown_ && handle_obstacle_ >= 0 &&
       handle_obstacle_ < static_cast<int>(scene_.obstacles.size()))
     if (const auto anchor = ObstacleAnchor(scene_.obstacles[handle_obstacle_]))
@@ -633,7 +638,9 @@ void MainWindow::onPathDragged(const Path& path) {
     return;
   Move& move = after.stages[handle_stage_].moves[handle_move_];
   move.path = path;
-  ApplyAfterDrag("drag the path of " + QString::fromStdString(move.gripper), after);
+  ApplyAfterDrag("drag the path of " +
+                     QString::fromStdString(move.gripper.empty() ? move.obstacle : move.gripper),
+                 after);
 }
 
 void MainWindow::pickNear(const Eigen::Vector3d& point) {
