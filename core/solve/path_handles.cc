@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -40,48 +40,41 @@ double AxisLength(const Eigen::Vector3d& center, const Eigen::Vector3d& start) {
   return r > 0 ? r : 0.05;
 }
 
-}  // namespace
-
-std::vector<CarriedMove> GripperMoves(const Scene& scene, const ShellModel& model) {
-  std::vector<Eigen::Vector3d> at(model.grippers.size(), Eigen::Vector3d::Zero());
-  for (size_t g = 0; g < model.grippers.size(); ++g) {
-    for (int node : model.grippers[g].nodes)
-      at[g] += model.reference.positions.row(node).transpose();
-    if (!model.grippers[g].nodes.empty())
-      at[g] /= static_cast<double>(model.grippers[g].nodes.size());
-  }
+// The moves that carry a point named in `at` (by the Move member `carried`:
+// its gripper or its obstacle), each starting where the earlier ones left it.
+std::vector<CarriedMove> Walk(const Scene& scene,
+                              std::map<std::string, Eigen::Vector3d> at,
+                              std::string Move::*carried) {
   std::vector<CarriedMove> moves;
   for (size_t s = 0; s < scene.stages.size(); ++s)
     for (size_t m = 0; m < scene.stages[s].moves.size(); ++m) {
       const Move& move = scene.stages[s].moves[m];
-      const auto it = std::find_if(model.grippers.begin(),
-                                   model.grippers.end(),
-                                   [&](const HeldNodes& h) { return h.name == move.gripper; });
-      if (move.gripper.empty() || it == model.grippers.end()) continue;
-      const size_t g = static_cast<size_t>(it - model.grippers.begin());
-      moves.push_back({static_cast<int>(s), static_cast<int>(m), move.gripper, at[g]});
-      at[g] = MotionAt(move.path, 1.0).Apply(at[g]);
+      const auto it = at.find(move.*carried);
+      if (it == at.end()) continue;
+      moves.push_back({static_cast<int>(s), static_cast<int>(m), it->first, it->second});
+      it->second = MotionAt(move.path, 1.0).Apply(it->second);
     }
   return moves;
 }
 
+}  // namespace
+
+std::vector<CarriedMove> GripperMoves(const Scene& scene, const ShellModel& model) {
+  std::map<std::string, Eigen::Vector3d> at;
+  for (const HeldNodes& g : model.grippers) {
+    if (g.nodes.empty()) continue;
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int node : g.nodes) centroid += model.reference.positions.row(node).transpose();
+    at[g.name] = centroid / static_cast<double>(g.nodes.size());
+  }
+  return Walk(scene, std::move(at), &Move::gripper);
+}
+
 std::vector<CarriedMove> ObstacleMoves(const Scene& scene) {
-  std::vector<std::optional<Eigen::Vector3d>> at;
-  for (const Obstacle& o : scene.obstacles) at.push_back(ObstacleAnchor(o));
-  std::vector<CarriedMove> moves;
-  for (size_t s = 0; s < scene.stages.size(); ++s)
-    for (size_t m = 0; m < scene.stages[s].moves.size(); ++m) {
-      const Move& move = scene.stages[s].moves[m];
-      const auto it = std::find_if(scene.obstacles.begin(),
-                                   scene.obstacles.end(),
-                                   [&](const Obstacle& o) { return o.name == move.obstacle; });
-      if (move.obstacle.empty() || it == scene.obstacles.end()) continue;
-      auto& anchor = at[static_cast<size_t>(it - scene.obstacles.begin())];
-      if (!anchor) continue;
-      moves.push_back({static_cast<int>(s), static_cast<int>(m), move.obstacle, *anchor});
-      anchor = MotionAt(move.path, 1.0).Apply(*anchor);
-    }
-  return moves;
+  std::map<std::string, Eigen::Vector3d> at;
+  for (const Obstacle& o : scene.obstacles)
+    if (const auto anchor = ObstacleAnchor(o)) at[o.name] = *anchor;
+  return Walk(scene, std::move(at), &Move::obstacle);
 }
 
 std::vector<Eigen::Vector3d> SamplePath(const Path& path,
