@@ -1,6 +1,7 @@
 #include "ui/widgets/edit_feedback.h"
 
 #include <QLabel>
+#include <nlohmann/json.hpp>
 
 #include "ui/widgets/scene_document.h"
 
@@ -16,6 +17,16 @@ QLabel* MakeMessageLabel(QWidget* parent) {
 bool ApplyOrSay(SceneDocument* document, QLabel* message, const QString& what, const Scene& after) {
   QString problem;
   const bool done = document->tryApply(what, after, &problem);
+  message->setText(problem);
+  return done;
+}
+
+bool ApplyOrSay(SceneDocument* document,
+                QLabel* message,
+                const QString& what,
+                const nlohmann::json& scene_json) {
+  QString problem;
+  const bool done = document->tryApplyJson(what, scene_json, &problem);
   message->setText(problem);
   return done;
 }

@@ -8,6 +8,8 @@
 #include <functional>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 class QLabel;
 class QWidget;
 
@@ -21,6 +23,11 @@ QLabel* MakeMessageLabel(QWidget* parent);
 
 // `document`->tryApply; the reason (or nothing) goes into `message`.
 bool ApplyOrSay(SceneDocument* document, QLabel* message, const QString& what, const Scene& after);
+// The same for a scene's JSON form (SceneDocument::tryApplyJson).
+bool ApplyOrSay(SceneDocument* document,
+                QLabel* message,
+                const QString& what,
+                const nlohmann::json& scene_json);
 
 // "stem N" for the first N ≥ `first` that `taken` does not report.
 std::string FreeName(const std::string& stem,

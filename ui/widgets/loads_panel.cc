@@ -13,7 +13,6 @@
 
 #include "core/io/scene_writer.h"
 #include "core/model/scene.h"
-#include "core/model/scene_error.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/selection_rule.h"
@@ -78,18 +77,11 @@ bool LoadsPanel::ApplyLoad(int index,
   nlohmann::json document = nlohmann::json::parse(SceneToJson(with).dump());
   document["loads"][index]["force"] = TypedList(force);
   document["loads"][index]["moment"] = TypedList(moment);
-  Scene after;
-  try {
-    after = document_->parse(document);
-  } catch (const SceneError& e) {
-    message_->setText(QString::fromStdString(e.what()));
-    return false;
-  }
   return ApplyOrSay(
       document_,
       message_,
-      QString("%1: force (%2)").arg(QString::fromStdString(after.loads[index].name), force),
-      after);
+      QString("%1: force (%2)").arg(QString::fromStdString(with.loads[index].name), force),
+      document);
 }
 
 bool LoadsPanel::add(

@@ -656,14 +656,7 @@ void MainWindow::pickNear(const Eigen::Vector3d& point) {
     picked_.push_back(node);
   else
     picked_.erase(it);
-  std::vector<std::array<double, 2>> at;
-  for (int n : picked_)
-    at.push_back({model_->reference.positions(n, 0), model_->reference.positions(n, 1)});
-  supports_->setPickedNodes(picked_, at);
-  grippers_->setPickedNodes(picked_, at);
-  loads_->setPickedNodes(picked_, at);
-  probes_->setPicked(at);
-  updateMarkers();
+  PublishPicked();
   statusBar()->showMessage(QString("node %1 %2; %3 nodes picked")
                                .arg(node)
                                .arg(added ? "picked" : "unpicked")
@@ -672,10 +665,19 @@ void MainWindow::pickNear(const Eigen::Vector3d& point) {
 
 void MainWindow::clearPicked() {
   picked_.clear();
-  supports_->setPickedNodes({}, {});
-  grippers_->setPickedNodes({}, {});
-  loads_->setPickedNodes({}, {});
-  probes_->setPicked({});
+  PublishPicked();
+}
+
+// The editors that can use picked nodes hear of them, with their reference
+// positions; the view marks them.
+void MainWindow::PublishPicked() {
+  std::vector<std::array<double, 2>> at;
+  for (int n : picked_)
+    at.push_back({model_->reference.positions(n, 0), model_->reference.positions(n, 1)});
+  supports_->setPickedNodes(picked_, at);
+  grippers_->setPickedNodes(picked_, at);
+  loads_->setPickedNodes(picked_, at);
+  probes_->setPicked(at);
   updateMarkers();
 }
 

@@ -135,6 +135,7 @@ class MainWindow : public QMainWindow {
   void updateHandles();
   void WarnOfNodeNumbers(const Scene& scene);
   void updateMarkers();
+  void PublishPicked();
   void onPathDragged(const Path& path);
   void onObstacleDragged();
   void ApplyAfterDrag(const QString& what, const Scene& after);

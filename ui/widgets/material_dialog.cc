@@ -23,8 +23,6 @@
 
 #include "core/io/kawabata_reader.h"
 #include "core/io/material_library.h"
-#include "core/io/scene_reader.h"
-#include "core/io/scene_writer.h"
 #include "core/mechanics/moment_curvature.h"
 #include "core/mechanics/moment_curvature_fit.h"
 #include "ui/widgets/scene_document.h"
@@ -237,24 +235,15 @@ bool MaterialDialog::applyBending() {
 bool MaterialDialog::applyLibrary() {
   if (library_->currentText().isEmpty()) return false;
   // The scene reader resolves the name, as for a scene that names it.
-  try {
-    nlohmann::ordered_json doc = SceneToJson(document_->scene());
-    doc["material"] = {{"library", library_->currentText().toStdString()}};
-    Scene after = document_->scene();
-    after.material =
-        SceneFromJson(nlohmann::json::parse(doc.dump()), document_->directory()).material;
-    QString problem;
-    if (!document_->tryApply("material " + library_->currentText(), after, &problem)) {
-      message_->setStyleSheet("color: #b00020");
-      message_->setText(problem);
-      return false;
-    }
-    return true;
-  } catch (const std::exception& e) {
+  nlohmann::json document = document_->json();
+  document["material"] = {{"library", library_->currentText().toStdString()}};
+  QString problem;
+  if (!document_->tryApplyJson("material " + library_->currentText(), document, &problem)) {
     message_->setStyleSheet("color: #b00020");
-    message_->setText(QString::fromStdString(e.what()));
+    message_->setText(problem);
     return false;
   }
+  return true;
 }
 
 }  // namespace drape

@@ -10,9 +10,7 @@
 #include <QVBoxLayout>
 #include <nlohmann/json.hpp>
 
-#include "core/io/scene_writer.h"
 #include "core/model/overloaded.h"
-#include "core/model/scene_error.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/typed_json.h"
@@ -167,16 +165,12 @@ bool MoveEditor::setPath(const QString& kind,
   }
   // The scene reader reads the path, so a wrong one gets its message (with
   // the key's place: stages[i].moves[j].path…).
-  nlohmann::json document = nlohmann::json::parse(SceneToJson(scene).dump());
+  nlohmann::json document = document_->json();
   document["stages"][stage_]["moves"][m]["path"] = path;
-  Scene after;
-  try {
-    after = document_->parse(document);
-  } catch (const SceneError& e) {
-    message_->setText(QString::fromStdString(e.what()));
-    return false;
-  }
-  return Apply(QString("%1 path of a move of stage %2").arg(kind).arg(stage_ + 1), after);
+  return ApplyOrSay(document_,
+                    message_,
+                    QString("%1 path of a move of stage %2").arg(kind).arg(stage_ + 1),
+                    document);
 }
 
 void MoveEditor::CommitFields() {

@@ -15,7 +15,6 @@
 
 #include "core/io/scene_writer.h"
 #include "core/model/scene.h"
-#include "core/model/scene_error.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/typed_json.h"
@@ -104,39 +103,29 @@ bool ObstaclesPanel::removeSelected() {
 bool ObstaclesPanel::applyText(const QString& text) {
   const int i = list_->currentRow();
   if (i < 0 || i >= static_cast<int>(document_->scene().obstacles.size())) return false;
-  nlohmann::json document = nlohmann::json::parse(SceneToJson(document_->scene()).dump());
+  nlohmann::json document = document_->json();
   try {
     document["obstacles"][i] = nlohmann::json::parse(text.toStdString());
   } catch (const nlohmann::json::parse_error& e) {
     message_->setText(QString("not JSON: %1").arg(e.what()));
     return false;
   }
-  Scene after;
-  try {
-    after = document_->parse(document);
-  } catch (const SceneError& e) {
-    message_->setText(QString::fromStdString(e.what()));
-    return false;
-  }
-  return Apply("edit " + QString::fromStdString(after.obstacles[i].name), after);
+  return ApplyOrSay(document_,
+                    message_,
+                    "edit " + QString::fromStdString(document_->scene().obstacles[i].name),
+                    document);
 }
 
 bool ObstaclesPanel::setContact(const QString& penalty, const QString& friction) {
-  nlohmann::json document = nlohmann::json::parse(SceneToJson(document_->scene()).dump());
+  nlohmann::json document = document_->json();
   document["contact"] = {
       {"penalty", penalty.trimmed() == "auto" ? nlohmann::json("auto") : TypedQuantity(penalty)},
       {"friction", TypedQuantity(friction)}};
-  Scene after;
-  try {
-    after = document_->parse(document);
-  } catch (const SceneError& e) {
-    message_->setText(QString::fromStdString(e.what()));
-    refresh();  // the fields show the scene's values again
-    return false;
-  }
-  const bool done =
-      Apply(QString("contact: penalty %1, friction %2").arg(penalty, friction), after);
-  if (!done) refresh();
+  const bool done = ApplyOrSay(document_,
+                               message_,
+                               QString("contact: penalty %1, friction %2").arg(penalty, friction),
+                               document);
+  if (!done) refresh();  // the fields show the scene's values again
   return done;
 }
 

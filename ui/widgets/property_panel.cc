@@ -13,10 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/io/scene_writer.h"
 #include "core/model/fabric_mesh.h"
 #include "core/model/overloaded.h"
-#include "core/model/scene_error.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/typed_json.h"
@@ -332,21 +330,15 @@ QString PropertyPanel::fabricMessage() const {
 
 bool PropertyPanel::ApplyFabric(const QString& what, const nlohmann::json& fabric) {
   // The scene reader reads the fabric, so wrong text gets its message.
-  nlohmann::json document = nlohmann::json::parse(SceneToJson(document_->scene()).dump());
+  nlohmann::json document = document_->json();
   document["fabric"] = fabric;
-  QString problem;
-  try {
-    document_->tryApply(what, document_->parse(document), &problem);
-  } catch (const SceneError& e) {
-    problem = QString::fromStdString(e.what());
-  }
-  fabric_message_->setText(problem);
-  if (!problem.isEmpty()) refresh();  // the fields show the scene's fabric again
-  return problem.isEmpty();
+  const bool done = ApplyOrSay(document_, fabric_message_, what, document);
+  if (!done) refresh();  // the fields show the scene's fabric again
+  return done;
 }
 
 bool PropertyPanel::setOutline(const QString& shape, const QString& extent, const QString& center) {
-  nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
+  nlohmann::json fabric = document_->json()["fabric"];
   nlohmann::json outline;
   if (shape == "rectangle") {
     outline["rectangle"] = {{"size", TypedList(extent)}, {"center", TypedList(center)}};
@@ -370,7 +362,7 @@ bool PropertyPanel::setOutline(const QString& shape, const QString& extent, cons
 }
 
 bool PropertyPanel::setImperfection(const QString& amplitude, int seed, const QString& pattern) {
-  nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
+  nlohmann::json fabric = document_->json()["fabric"];
   const nlohmann::json a = TypedQuantity(amplitude);
   if (amplitude.trimmed().isEmpty() || (a.is_number() && a.get<double>() == 0.0)) {
     fabric.erase("imperfection");
@@ -385,7 +377,7 @@ bool PropertyPanel::setImperfection(const QString& amplitude, int seed, const QS
 }
 
 bool PropertyPanel::setElementSize(const QString& size) {
-  nlohmann::json fabric = nlohmann::json::parse(SceneToJson(document_->scene()).dump())["fabric"];
+  nlohmann::json fabric = document_->json()["fabric"];
   fabric["mesh"] = {{"size", TypedQuantity(size)}};
   return ApplyFabric("element size " + size, fabric);
 }

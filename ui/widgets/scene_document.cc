@@ -83,6 +83,23 @@ Scene SceneDocument::parse(const nlohmann::json& document) const {
   return SceneFromJson(document, directory());
 }
 
+nlohmann::json SceneDocument::json() const {
+  return nlohmann::json::parse(SceneToJson(scene_).dump());
+}
+
+bool SceneDocument::tryApplyJson(const QString& what,
+                                 const nlohmann::json& document,
+                                 QString* problem) {
+  Scene after;
+  try {
+    after = parse(document);
+  } catch (const std::exception& e) {
+    if (problem) *problem = QString::fromStdString(e.what());
+    return false;
+  }
+  return tryApply(what, after, problem);
+}
+
 QString SceneDocument::check(const Scene& after) const {
   try {
     BuildShellModel(parse(nlohmann::json::parse(SceneToJson(after).dump())));

@@ -53,6 +53,15 @@ class SceneDocument : public QObject {
   // check(), then apply(); false with the reason in `problem`.
   bool tryApply(const QString& what, const Scene& after, QString* problem = nullptr);
 
+  // The scene's JSON form, as the scene file has it: editors put what the
+  // user typed into it and hand it back to tryApplyJson.
+  nlohmann::json json() const;
+  // `document` read by parse() (the reader's message, with the key, when
+  // it is wrong), then tryApply().
+  bool tryApplyJson(const QString& what,
+                    const nlohmann::json& document,
+                    QString* problem = nullptr);
+
  signals:
   void changed();  // after open, an edit, undo or redo
 

@@ -29,7 +29,8 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   auto* down = new QPushButton("Down", this);
   auto* remove = new QPushButton("Remove", this);
   new_kind_ = new QComboBox(this);
-  new_kind_->addItems({"gravity", "load", "move", "hold"});
+  for (StageKind k : {StageKind::kGravity, StageKind::kLoad, StageKind::kMove, StageKind::kHold})
+    new_kind_->addItem(ToString(k));
   auto* add = new QPushButton("Add stage", this);
   buttons->addWidget(new_kind_);
   buttons->addWidget(add);
@@ -82,9 +83,11 @@ bool StagesPanel::addStage(const QString& kind) {
   Scene after = document_->scene();
   Stage stage;
   stage.name = FreeName("stage", after.stages);
-  const QStringList kinds = {"gravity", "load", "move", "hold"};
-  if (!kinds.contains(kind)) return false;
-  stage.kind = static_cast<StageKind>(kinds.indexOf(kind));
+  const auto known = {StageKind::kGravity, StageKind::kLoad, StageKind::kMove, StageKind::kHold};
+  const auto it =
+      std::find_if(known.begin(), known.end(), [&](StageKind k) { return kind == ToString(k); });
+  if (it == known.end()) return false;
+  stage.kind = *it;
   if (stage.kind == StageKind::kMove) {
     if (after.grippers.empty()) {
       message_->setText("a move stage carries a gripper: add a gripper first");
