@@ -105,6 +105,8 @@ void ResultWriter::AddStep(const StepState& step) {
          {"lambda", step.lambda},
          {"iterations", step.iterations},
          {"residuals", step.residuals},
+         {"residual_ratio", step.residuals.empty() ? 0.0 : step.residuals.back()},
+         {"converged_by", ToString(step.convergence)},
          {"arc_length", step.arc_length},
          {"negative_pivots", step.negative_pivots},
          {"max_curvature", step.max_curvature},

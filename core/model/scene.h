@@ -266,7 +266,7 @@ struct Stage {
 
 struct SolverSettings {
   double tolerance = 1e-5;               // ‖R‖/‖R₀‖
-  double displacement_tolerance = 1e-8;  // ‖Δu‖/‖u‖
+  double displacement_tolerance = 1e-8;  // stall: max|Δu| / the part's diagonal
   int target_iterations = 7;             // N_p
   bool acceleration = true;              // γₙ = N_p / N_{n−1}
   int max_steps = 5000;

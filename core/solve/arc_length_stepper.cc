@@ -3,17 +3,6 @@
 #include <cmath>
 
 namespace drape {
-namespace {
-
-// Largest translation in a full increment: the Newton correction's size.
-double MaxTranslation(const Eigen::VectorXd& full) {
-  double m = 0;
-  for (int i = 0; i < full.size() / kDofsPerNode; ++i)
-    m = std::max(m, full.segment<3>(kDofsPerNode * i).cwiseAbs().maxCoeff());
-  return m;
-}
-
-}  // namespace
 
 ArcLengthStepper::ArcLengthStepper(EquilibriumSystem& system,
                                    const StageLoading& loading,
@@ -68,6 +57,7 @@ ContinuationStep ArcLengthStepper::StepTo(ShellState& state,
   out.reason = newton.reason;
   out.iterations = newton.iterations + 1;
   out.residuals = newton.residuals;
+  out.convergence = newton.convergence;
   out.negative_pivots = newton.negative_pivots;
   out.lambda = target;
   out.landed = true;
@@ -125,6 +115,11 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
       out.reason = "cancelled";
       return out;
     }
+    if (!IsFinite(state)) {
+      out.status = NewtonOutcome::Status::kDiverged;
+      out.reason = "the state is not finite";
+      return out;
+    }
     f0 = AssembleWithRate(state, lambda);
     const Eigen::VectorXd f_ext = loading_.External(lambda, state);
     const Eigen::VectorXd r = system_.Residual(f_ext);
@@ -134,10 +129,17 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
     out.residuals.push_back(ratio);
     if (!std::isfinite(norm) || ratio > newton_.divergence_ratio) {
       out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the residual grew by a factor " + std::to_string(ratio);
+      out.reason = "the residual grew by a factor " + Number(ratio);
       return out;
     }
-    if (newton_.Converged(out.residuals, norm, last_correction)) {
+    out.convergence =
+        newton_.Judge(out.residuals, norm, system_.RoundOffLevel(state), last_correction);
+    if (out.convergence == Convergence::kStalled) {
+      out.status = NewtonOutcome::Status::kStalled;
+      out.reason = StallReason(ratio, newton_.tolerance);
+      return out;
+    }
+    if (out.convergence != Convergence::kNotYet) {
       if (lambda > target + 1e-12) {
         // Converged past the stage's end: redo the step landing on it.
         state = start;
@@ -162,7 +164,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
     if (it == newton_.max_iterations) {
       out.status = NewtonOutcome::Status::kIterationLimit;
       out.reason = "no convergence in " + std::to_string(it) +
-                   " iterations (‖R‖/‖R₀‖ = " + std::to_string(ratio) + ")";
+                   " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")";
       return out;
     }
     // Bordered update: two solves with one factorisation.

@@ -36,6 +36,7 @@ struct ContinuationStep {
   std::string reason;
   int iterations = 0;
   std::vector<double> residuals;
+  Convergence convergence = Convergence::kNotYet;  // how the last iteration was judged
   int negative_pivots = 0;
   double lambda = 0;      // reached
   double arc_length = 0;  // Δs actually used

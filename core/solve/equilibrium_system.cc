@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace drape {
 namespace {
@@ -92,6 +93,28 @@ double EquilibriumSystem::ForceLevel(const Eigen::VectorXd& external) const {
     }
   }
   return std::sqrt(free) + std::sqrt(fixed);
+}
+
+double EquilibriumSystem::RoundOffLevel(const ShellState& state) const {
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double coordinate = state.positions.cwiseAbs().maxCoeff();
+  Eigen::VectorXd delta2(dofs_.FreeCount());
+  for (int d = 0; d < dofs_.DofCount(); ++d)
+    if (const int f = dofs_.Free(d); f >= 0) {
+      const double delta = d % kDofsPerNode < 3 ? eps * coordinate : eps;
+      delta2(f) = delta * delta;
+    }
+  const int* outer = tangent_.outerIndexPtr();
+  const int* inner = tangent_.innerIndexPtr();
+  const double* values = tangent_.valuePtr();
+  double sum = 0;
+  for (int c = 0; c < tangent_.outerSize(); ++c)
+    for (int k = outer[c]; k < outer[c + 1]; ++k) {
+      const double v2 = values[k] * values[k];
+      sum += v2 * delta2(c);
+      if (inner[k] != c) sum += v2 * delta2(inner[k]);
+    }
+  return std::sqrt(sum);
 }
 
 FactorizationInfo EquilibriumSystem::Factorize() {

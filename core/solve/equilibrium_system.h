@@ -50,6 +50,12 @@ class EquilibriumSystem {
   // is small against when a step adds no load (grippers move, a hold).
   double ForceLevel(const Eigen::VectorXd& external) const;
 
+  // The residual's round-off level at `state` [N]: ‖K δ‖ for the state's
+  // coordinates each off by one rounding (δ = ε·max|x| on translations, ε on
+  // rotations), from the last assembled tangent; root-sum-square over the
+  // free DOFs. No Newton iteration can bring ‖R‖ reliably below it.
+  double RoundOffLevel(const ShellState& state) const;
+
   // Factorises the last assembled tangent.
   FactorizationInfo Factorize();
   // K⁻¹ b with the last factorisation (free DOFs).

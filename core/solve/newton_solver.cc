@@ -2,8 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace drape {
+
+const char* ToString(Convergence c) {
+  switch (c) {
+    case Convergence::kNotYet:
+      return "not_converged";
+    case Convergence::kTolerance:
+      return "tolerance";
+    case Convergence::kRoundOff:
+      return "round_off";
+    case Convergence::kStalled:
+      return "stalled";
+  }
+  return "?";
+}
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+std::string StallReason(double ratio, double tolerance) {
+  return "Newton stalled at ‖R‖/‖R₀‖ = " + Number(ratio) + " (tolerance " + Number(tolerance) +
+         "): the corrections stopped while the residual stays above the tolerance and the "
+         "round-off floor";
+}
 
 NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
                                const ExternalForce& external,
@@ -18,6 +45,11 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
     if (cancel && cancel->IsCancelled()) {
       out.status = NewtonOutcome::Status::kCancelled;
       out.reason = "cancelled";
+      return out;
+    }
+    if (!IsFinite(state)) {
+      out.status = NewtonOutcome::Status::kDiverged;
+      out.reason = "the state is not finite";
       return out;
     }
     system.Assemble(state, /*with_tangent=*/true);
@@ -35,32 +67,36 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
     const double reference = settings.relative_to_force_level ? system.ForceLevel(f_ext) : r0;
     const double ratio = reference > 0 ? norm / reference : 0.0;
     out.residuals.push_back(ratio);
-    if (settings.Converged(out.residuals, norm, last_correction)) {
+    out.convergence =
+        settings.Judge(out.residuals, norm, system.RoundOffLevel(state), last_correction);
+    if (out.convergence == Convergence::kTolerance || out.convergence == Convergence::kRoundOff) {
       out.status = NewtonOutcome::Status::kConverged;
       // The stability indicator belongs to the converged state, whose tangent
       // was just assembled.
       out.negative_pivots = system.Factorize().negative_pivots;
       return out;
     }
+    if (out.convergence == Convergence::kStalled) {
+      out.status = NewtonOutcome::Status::kStalled;
+      out.reason = StallReason(ratio, settings.tolerance);
+      return out;
+    }
     if (ratio > settings.divergence_ratio) {
       out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the residual grew by a factor " + std::to_string(ratio);
+      out.reason = "the residual grew by a factor " + Number(ratio);
       return out;
     }
     if (it == settings.max_iterations) {
       out.status = NewtonOutcome::Status::kIterationLimit;
       out.reason = "no convergence in " + std::to_string(it) +
-                   " iterations (‖R‖/‖R₀‖ = " + std::to_string(ratio) + ")";
+                   " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")";
       return out;
     }
     system.Factorize();
     const Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-r));
     ApplyIncrement(correction, state);
     ++out.iterations;
-    last_correction = 0;
-    for (int i = 0; i < state.NodeCount(); ++i)
-      last_correction =
-          std::max(last_correction, correction.segment<3>(kDofsPerNode * i).cwiseAbs().maxCoeff());
+    last_correction = MaxTranslation(correction);
   }
 }
 

@@ -15,43 +15,64 @@ namespace drape {
 
 struct NewtonSettings {
   double tolerance = 1e-5;  // on ‖R‖/‖R₀‖
-  // R₀: the out-of-balance force the step introduced, ‖Δλ F_ref‖ over the
-  // free DOFs (the paper's R⁰ when the step starts from the last equilibrium).
-  // Zero means "the first residual", for steps that introduce no load.
+  // R₀: the out-of-balance force the step introduced, ‖Δλ F₀‖ over the free
+  // DOFs (F₀ = ∂F_ext/∂λ − ∂F_int/∂λ: the paper's R⁰ when the step starts
+  // from the last equilibrium). Zero means "the first residual", for steps
+  // that introduce no load.
   double residual_reference = 0;
   // Measure ‖R‖ against the force level (loads and reactions) instead: for
   // steps that add no load. Prescribed motion's ‖K_fp ∂u_p/∂λ‖ Δλ is a
   // membrane-stiffness force, often 1e6 times the reactions it produces, and
   // would accept steps whose reactions are still wrong.
   bool relative_to_force_level = false;
-  double residual_floor = 0;      // ‖R‖ at or below this is converged [N]: round-off level
-  double displacement_floor = 0;  // a correction max|Δu| at or below this is converged [m]
+  // The round-off floor: ‖R‖ at most this many times the residual's
+  // round-off level (EquilibriumSystem::RoundOffLevel: ‖K δ‖ for the state
+  // rounded to double precision) counts as converged, reported as such.
+  // Measured: 10 keeps every verification test at its tolerance; 100
+  // accepts steps that the tests find inaccurate.
+  double round_off_factor = 10;
+  // A correction max|Δu| at or below this [m] while the residual is above
+  // both the tolerance and the floor and no longer halves per iteration
+  // is a stall: the step fails (and is cut back) at once.
+  double stall_correction = 0;
   int max_iterations = 30;
   double divergence_ratio = 1e6;
 
-  // Converged: the residual is small, or at round-off, or the corrections
-  // have stopped and so has the residual (`ratios`: every ‖R‖/‖R₀‖ so far,
-  // the current one last). A stiff penalty (contact) turns a residual of a
-  // few percent of a node's weight into a correction below the displacement
-  // floor, so a small correction while the residual still falls fast is not
-  // equilibrium yet.
-  bool Converged(const std::vector<double>& ratios, double norm, double last_correction) const {
-    const double ratio = ratios.back();
-    if (ratio <= tolerance || norm <= residual_floor) return true;
-    if (last_correction > displacement_floor) return false;
-    const bool stalled = ratios.size() < 2 || ratio > 0.1 * ratios[ratios.size() - 2];
-    return stalled || ratio * ratio <= tolerance;
+  // `ratios`: every ‖R‖/‖R₀‖ of the iteration so far, the current one last;
+  // `norm` = ‖R‖ [N]; `round_off` the residual's round-off level [N];
+  // `last_correction` the last max|Δu| [m] (∞ before the first).
+  Convergence Judge(const std::vector<double>& ratios,
+                    double norm,
+                    double round_off,
+                    double last_correction) const {
+    if (ratios.back() <= tolerance) return Convergence::kTolerance;
+    if (norm <= round_off_factor * round_off) return Convergence::kRoundOff;
+    if (last_correction > stall_correction) return Convergence::kNotYet;
+    // A stiff penalty (contact) turns a residual of a few percent of a node's
+    // weight into a correction below the floor, and friction makes Newton
+    // converge linearly: while the residual still halves, that is progress,
+    // not a stall.
+    const bool falling = ratios.size() >= 2 && ratios.back() <= 0.5 * ratios[ratios.size() - 2];
+    return falling ? Convergence::kNotYet : Convergence::kStalled;
   }
 };
 
 struct NewtonOutcome {
-  enum class Status { kConverged, kDiverged, kIterationLimit, kCancelled };
+  enum class Status { kConverged, kDiverged, kIterationLimit, kStalled, kCancelled };
   Status status = Status::kDiverged;
   int iterations = 0;             // linear solves
   std::vector<double> residuals;  // ‖R‖/‖R₀‖, one per assembly (R₀: the load the step added)
-  int negative_pivots = 0;        // of the last factorised tangent
-  std::string reason;             // why it did not converge
+  // How the last iteration was judged: kTolerance or kRoundOff when converged.
+  Convergence convergence = Convergence::kNotYet;
+  int negative_pivots = 0;  // of the converged state's tangent
+  std::string reason;       // why it did not converge
 };
+
+// A ratio or tolerance for a message: "%.3g".
+std::string Number(double value);
+
+// Why a stalled iteration failed, for the step's message.
+std::string StallReason(double ratio, double tolerance);
 
 // External force (full, 5 per node) for a state: moments depend on the
 // nodal bases, so this is a function, not a vector.

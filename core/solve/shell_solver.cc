@@ -204,9 +204,7 @@ NewtonSettings ShellSolver::Impl::Newton() const {
   n.tolerance = options.tolerance;
   n.max_iterations = options.max_iterations;
   n.divergence_ratio = options.divergence_ratio;
-  // Below ~1e-11 of the weight the residual is round-off in the membrane forces.
-  n.residual_floor = 1e-11 * model.total_weight.norm();
-  n.displacement_floor = options.displacement_tolerance * model.characteristic_length;
+  n.stall_correction = options.displacement_tolerance * model.characteristic_length;
   return n;
 }
 
@@ -228,6 +226,7 @@ void ShellSolver::Impl::Augment(double lambda,
     }
     step.iterations += newton.iterations;
     step.residuals.insert(step.residuals.end(), newton.residuals.begin(), newton.residuals.end());
+    step.convergence = newton.convergence;
     step.negative_pivots = newton.negative_pivots;
     ++summary.augmentations;
     summary.iterations += newton.iterations;
@@ -249,6 +248,7 @@ bool ShellSolver::Impl::Emit(int stage_index,
   step.lambda = lambda;
   step.iterations = result.iterations;
   step.residuals = result.residuals;
+  step.convergence = result.convergence;
   step.arc_length = result.arc_length;
   step.negative_pivots = result.negative_pivots;
   step.max_curvature = MaxPrincipalCurvature(model, state);
@@ -352,6 +352,7 @@ ContinuationStep StepOf(const NewtonOutcome& newton) {
   ContinuationStep step;
   step.iterations = newton.iterations;
   step.residuals = newton.residuals;
+  step.convergence = newton.convergence;
   step.negative_pivots = newton.negative_pivots;
   return step;
 }

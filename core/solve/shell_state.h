@@ -34,6 +34,12 @@ struct ShellState {
   Eigen::Matrix<double, Eigen::Dynamic, 3> Directors() const;
 };
 
+// Every position and rotation entry finite (obstacles too).
+bool IsFinite(const ShellState& state);
+
+// The largest translation component of a full increment (5 per node) [m].
+double MaxTranslation(const Eigen::VectorXd& increment);
+
 // Adds a full increment (5 values per node, node-major): φ += Δu and
 // Λ ← exp(ŵ) Λ with w = a g₁ + b g₂.
 void ApplyIncrement(const Eigen::VectorXd& increment, ShellState& state);

@@ -9,10 +9,13 @@
 namespace drape {
 
 struct SolverOptions {
-  // Equilibrium: ‖R‖/‖R₀‖ at most this, R₀ the residual at the start of the step.
+  // Equilibrium: ‖R‖/‖R₀‖ at most this, R₀ the out-of-balance force the step
+  // added (or the force level, when it adds none); or ‖R‖ at the round-off
+  // floor (NewtonSettings::round_off_factor).
   double tolerance = 1e-5;
-  // Or: the last Newton correction at most this fraction of the part's size
-  // (round-off stagnation; the residual cannot fall further).
+  // Stall: a Newton correction at most this fraction of the part's size while
+  // the residual is above the tolerance and no longer halves fails the step
+  // (it is cut back). Never a convergence test.
   double displacement_tolerance = 1e-8;
   // N_p, the iterations a step should take; γ = N_p / N_{n−1} scales the next step.
   int target_iterations = 7;

@@ -35,6 +35,17 @@ struct ContactReport {
   std::vector<double> pressure;  // per node: contact force / tributary area [Pa]
 };
 
+// How an iteration stands against the convergence test.
+enum class Convergence {
+  kNotYet,     // iterate on
+  kTolerance,  // ‖R‖/‖R₀‖ ≤ tolerance
+  kRoundOff,   // ‖R‖ at the round-off floor: as converged as the arithmetic allows
+  kStalled,    // the corrections stopped with the residual above both: not converged
+};
+
+// "tolerance", "round_off", "stalled", "not_converged" (result.json's words).
+const char* ToString(Convergence convergence);
+
 struct StepState {
   int stage = -1;  // index in the scene's stages
   std::string stage_name;
@@ -43,7 +54,10 @@ struct StepState {
   double lambda = 0;              // the stage's load factor
   int iterations = 0;             // Newton iterations of this step
   std::vector<double> residuals;  // ‖R‖/‖R₀‖ after each assembly (R₀: the load the step added)
-  double arc_length = 0;          // the step's length along the path
+  // How the step's last iteration met the test: the tolerance, or the
+  // round-off floor (NewtonSettings::round_off_factor).
+  Convergence convergence = Convergence::kTolerance;
+  double arc_length = 0;                 // the step's length along the path
   int negative_pivots = 0;               // of the converged tangent
   double max_curvature = 0;              // largest principal |κ| at a Gauss point [1/m]
   std::vector<NamedVector> reactions;    // force each support and gripper exerts [N]
