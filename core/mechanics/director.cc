@@ -27,11 +27,24 @@ Eigen::Matrix3d ExpRotation(const Eigen::Vector3d& w) {
   return Eigen::Matrix3d::Identity() + a * s + b * s * s;
 }
 
-Eigen::Matrix3d RotationFromDirector(const Eigen::Vector3d& t) {
-  const Eigen::Vector3d e3 = Eigen::Vector3d::UnitZ();
-  const double c = e3.dot(t);
-  const Eigen::Vector3d k = e3.cross(t);
+namespace {
+
+// The paper's formula, well conditioned for E₃·t ≥ 0 (1 + c ≥ 1).
+Eigen::Matrix3d UpperHemisphere(const Eigen::Vector3d& t) {
+  const double c = t.z();
+  const Eigen::Vector3d k = Eigen::Vector3d::UnitZ().cross(t);
   return c * Eigen::Matrix3d::Identity() + Skew(k) + k * k.transpose() / (1.0 + c);
+}
+
+}  // namespace
+
+Eigen::Matrix3d RotationFromDirector(const Eigen::Vector3d& t) {
+  if (t.z() >= 0) return UpperHemisphere(t);
+  // Below the equator 1 + c vanishes at t = −E₃ (0/0, NaN there and lost
+  // digits near it). Turn by π about E₁ first: F = diag(1, −1, −1) takes E₃
+  // to −E₃, so Λ = F Λ' with Λ' E₃ = F t, which lies in the upper half.
+  const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, -1).asDiagonal();
+  return flip * UpperHemisphere(flip * t);
 }
 
 void UpdateRotation(const Eigen::Vector2d& increment, Eigen::Matrix3d& rotation) {

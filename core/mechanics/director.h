@@ -16,8 +16,11 @@ Eigen::Matrix3d Skew(const Eigen::Vector3d& w);
 // exp(ŵ) by Rodrigues' formula, accurate for small and large |w|.
 Eigen::Matrix3d ExpRotation(const Eigen::Vector3d& w);
 
-// The rotation taking E₃ to t about the axis E₃ × t, the paper's
-// Λ = (E·t) I + (E×t)^ + (E×t)⊗(E×t) / (1 + E·t). Requires |t| = 1, t ≠ −E₃.
+// A rotation taking E₃ to t: for E₃·t ≥ 0 the one about the axis E₃ × t, the
+// paper's Λ = (E·t) I + (E×t)^ + (E×t)⊗(E×t) / (1 + E·t); below the equator
+// that rotation composed with a half turn about E₁, so it stays accurate down
+// to t = −E₃ (a fold's turned-over end). Requires |t| = 1. The shell's
+// strains depend on t alone, not on which such rotation it is.
 Eigen::Matrix3d RotationFromDirector(const Eigen::Vector3d& t);
 
 // Applies the increment (a, b): Λ ← exp(ŵ) Λ with w = a Λe₁ + b Λe₂.

@@ -240,6 +240,14 @@ bool ShellSolver::Impl::Emit(int stage_index,
                              const ContinuationStep& converged) {
   ContinuationStep result = converged;
   if (contact && augment_contact) Augment(lambda, loading, result);
+  // The steppers refuse non-finite trial states; this keeps the promise that
+  // no observer and no file ever sees one, whatever a future path does.
+  if (!IsFinite(state)) {
+    Stop(Termination::kNumericalFailure,
+         "stage '" + scene.stages[stage_index].name + "': a converged state at λ = " +
+             std::to_string(lambda) + " is not finite; it was not kept");
+    return false;
+  }
   StepState step;
   step.stage = stage_index;
   step.stage_name = scene.stages[stage_index].name;

@@ -1,0 +1,151 @@
+// Every shipped scene, run and exported as a user would (the `drape` binary):
+// no number anywhere in what it writes is NaN or infinite — result.json,
+// states.bin, and the CSV, OBJ and VTU exports of every step.
+#include <gtest/gtest.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/io/state_file.h"
+#include "support/drape_command.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+// JSON has no NaN: nlohmann writes a non-finite number as null. The one null
+// a result may hold on purpose is an unlimited (linear) bending range.
+void CollectNulls(const nlohmann::json& j, const std::string& at, std::vector<std::string>& out) {
+  if (j.is_null()) {
+    if (at != "/bending/valid_to") out.push_back(at);
+  } else if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it)
+      CollectNulls(it.value(), at + "/" + it.key(), out);
+  } else if (j.is_array()) {
+    for (size_t i = 0; i < j.size(); ++i) CollectNulls(j[i], at + "/" + std::to_string(i), out);
+  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    out.push_back(at);
+  }
+}
+
+bool LooksNonFinite(std::string token) {
+  for (char& c : token) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return token.find("nan") != std::string::npos || token.find("inf") != std::string::npos;
+}
+
+// Every comma- or space-separated token of a text export that is not quoted.
+int NonFiniteTokens(const fs::path& file, std::string* first) {
+  std::ifstream in(file);
+  std::string line;
+  int bad = 0;
+  std::getline(in, line);  // CSV header, or OBJ's comment
+  while (std::getline(in, line)) {
+    for (char& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream tokens(line);
+    std::string token;
+    while (tokens >> token)
+      if (token.front() != '"' && LooksNonFinite(token) && bad++ == 0) *first = line;
+  }
+  return bad;
+}
+
+int NonFiniteVtu(const fs::path& file, std::string* what) {
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  int bad = 0;
+  auto check = [&](vtkDataArray* a, const std::string& name) {
+    if (!a) return;
+    for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+        if (!std::isfinite(a->GetComponent(t, c)) && bad++ == 0) *what = name;
+  };
+  if (grid->GetNumberOfPoints() == 0) {
+    *what = "no points";
+    return 1;
+  }
+  check(grid->GetPoints()->GetData(), "points");
+  for (int i = 0; i < grid->GetPointData()->GetNumberOfArrays(); ++i)
+    check(grid->GetPointData()->GetArray(i), grid->GetPointData()->GetArrayName(i));
+  for (int i = 0; i < grid->GetCellData()->GetNumberOfArrays(); ++i)
+    check(grid->GetCellData()->GetArray(i), grid->GetCellData()->GetArrayName(i));
+  return bad;
+}
+
+class ShippedScene : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(ShippedScene, EveryNumberItWritesIsFinite) {
+  const fs::path scene = GetParam();
+  const fs::path dir = fs::path(::testing::TempDir()) / ("shipped-" + scene.stem().string());
+  fs::remove_all(dir);
+  const test::CommandResult run =
+      test::RunDrape("run '" + scene.string() + "' -o '" + dir.string() + "' --quiet");
+  ASSERT_TRUE(fs::exists(dir / "result.json")) << run.output;
+
+  std::ifstream in(dir / "result.json");
+  const nlohmann::json result = nlohmann::json::parse(in);
+  std::vector<std::string> nulls;
+  CollectNulls(result, "", nulls);
+  EXPECT_TRUE(nulls.empty()) << "result.json: " << nulls.size() << " non-finite numbers, first at "
+                             << nulls.front();
+
+  const StateFile states = ReadStateFile(dir / "states.bin");
+  ASSERT_FALSE(states.steps.empty());
+  for (const StoredStep& s : states.steps) {
+    EXPECT_TRUE(s.positions.allFinite()) << "states.bin, step " << s.step;
+    EXPECT_TRUE(s.directors.allFinite()) << "states.bin, step " << s.step;
+  }
+
+  for (const char* format : {"csv", "obj", "vtu"}) {
+    const fs::path out = dir / format;
+    const test::CommandResult exported = test::RunDrape("export '" + dir.string() + "' -o '" +
+                                                        out.string() + "' --format " + format);
+    ASSERT_EQ(exported.exit_code, 0) << exported.output;
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      const fs::path& f = entry.path();
+      std::string first;
+      if (f.extension() == ".csv" || f.extension() == ".obj") {
+        ++files;
+        EXPECT_EQ(NonFiniteTokens(f, &first), 0) << f << ": " << first;
+      } else if (f.extension() == ".vtu") {
+        ++files;
+        EXPECT_EQ(NonFiniteVtu(f, &first), 0) << f << ": " << first;
+      }
+    }
+    EXPECT_GE(files, static_cast<int>(states.steps.size())) << format;
+  }
+}
+
+std::string SceneName(const ::testing::TestParamInfo<fs::path>& info) {
+  std::string name = info.param.stem().string();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Resources,
+                         ShippedScene,
+                         ::testing::ValuesIn(test::ExampleScenes()),
+                         SceneName);
+
+}  // namespace
+}  // namespace drape
