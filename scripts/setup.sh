@@ -9,7 +9,7 @@ DRAPE_PACKAGES=(
   # build
   g++ cmake ninja-build ccache pkg-config
   # engine
-  libeigen3-dev libsuitesparse-dev libopenblas-pthread-dev libgmsh-dev
+  libeigen3-dev libsuitesparse-dev libopenblas-pthread-dev libgmsh-dev libspectra-dev
   nlohmann-json3-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev

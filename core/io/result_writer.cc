@@ -167,12 +167,23 @@ void ResultWriter::Finish(const SolveSummary& summary) {
                            {"control", ToString(st.control_used)},
                            {"final_lambda", st.final_lambda}});
   r["stability_events"] = json::array();
-  for (const auto& e : summary.stability_events)
-    r["stability_events"].push_back({{"stage", e.stage},
-                                     {"step", e.step},
-                                     {"lambda", e.lambda},
-                                     {"negative_pivots_before", e.negative_pivots_before},
-                                     {"negative_pivots_after", e.negative_pivots_after}});
+  for (const auto& e : summary.stability_events) {
+    json event{{"stage", e.stage},
+               {"step", e.step},
+               {"kind", ToString(e.kind)},
+               {"lambda", e.lambda},
+               {"negative_pivots_before", e.negative_pivots_before},
+               {"negative_pivots_after", e.negative_pivots_after},
+               {"branch", ToString(e.branch)}};
+    if (e.branch == Branch::kStable) {
+      event["negative_pivots_fundamental"] = e.negative_pivots_fundamental;
+      event["modes"] = e.modes;
+      event["mode_max_displacement"] = e.mode_max_displacement;
+      event["switch_iterations"] = e.switch_iterations;
+      event["switch_s"] = e.switch_s;
+    }
+    r["stability_events"].push_back(std::move(event));
+  }
   r["notes"] = summary.notes;
   r["warnings"] = summary.warnings;
   // JSON has no infinity: a linear law's unlimited range is null.

@@ -744,7 +744,8 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
                   "max_steps",
                   "max_iterations",
                   "max_step_cuts",
-                  "psi"});
+                  "psi",
+                  "branching"});
   SolverSettings s;
   auto fraction = [&](const char* key, double& out) {
     if (auto v = c.Find(key)) {
@@ -767,6 +768,8 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("max_step_cuts", s.max_step_cuts, 0);
   if (auto a = c.Find("acceleration")) s.acceleration = a->Boolean();
   if (auto p = c.Find("psi")) s.psi = p->PositiveQuantity(dim::kLength);
+  if (auto b = c.Find("branching"))
+    s.branching = static_cast<Branching>(b->Choice({"stable", "fundamental"}));
   return s;
 }
 

@@ -182,7 +182,8 @@ json ToJson(const SolverSettings& s) {
          {"acceleration", s.acceleration},
          {"max_steps", s.max_steps},
          {"max_iterations", s.max_iterations},
-         {"max_step_cuts", s.max_step_cuts}};
+         {"max_step_cuts", s.max_step_cuts},
+         {"branching", ToString(s.branching)}};
   if (s.psi) j["psi"] = *s.psi;
   return j;
 }

@@ -93,6 +93,16 @@ double ProjectedArea(const Mesh& mesh) {
   return 0.5 * twice;
 }
 
+double MeanEdgeLength(const Mesh& mesh) {
+  if (mesh.ElementCount() == 0) return 0;
+  double sum = 0;
+  for (int e = 0; e < mesh.ElementCount(); ++e)
+    for (int k = 0; k < 4; ++k)
+      sum += (mesh.positions.row(mesh.quads(e, (k + 1) % 4)) - mesh.positions.row(mesh.quads(e, k)))
+                 .norm();
+  return sum / (4.0 * mesh.ElementCount());
+}
+
 MeshQuality MeasureQuality(const Mesh& mesh) {
   MeshQuality quality;
   if (mesh.ElementCount() == 0) return quality;

@@ -41,6 +41,10 @@ Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
 // numbered clockwise counts negative).
 double ProjectedArea(const Mesh& mesh);
 
+// The mean length of the quads' edges (each quad's four, shared edges
+// counted twice) [m].
+double MeanEdgeLength(const Mesh& mesh);
+
 // Shape measures over all quads, for tests and for the `validate` summary,
 // taken on the quads' projection on the xy plane.
 struct MeshQuality {

@@ -48,4 +48,8 @@ const char* ToString(ImperfectionPattern pattern) {
   return pattern == ImperfectionPattern::kSmooth ? "smooth" : "nodal";
 }
 
+const char* ToString(Branching branching) {
+  return branching == Branching::kStable ? "stable" : "fundamental";
+}
+
 }  // namespace drape

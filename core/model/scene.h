@@ -264,6 +264,12 @@ struct Stage {
 
 // ---- solver, probes -----------------------------------------------------------
 
+// What the continuation does where the path bifurcates.
+enum class Branching {
+  kStable,       // switch to the branch a real part takes (stable where one is)
+  kFundamental,  // follow the primary path through (the paper's studies)
+};
+
 struct SolverSettings {
   double tolerance = 1e-5;               // ‖R‖/‖R₀‖
   double displacement_tolerance = 1e-8;  // stall: max|Δu| / the part's diagonal
@@ -273,6 +279,7 @@ struct SolverSettings {
   int max_iterations = 30;
   int max_step_cuts = 10;
   std::optional<double> psi;  // [m]; default: a characteristic length of the part
+  Branching branching = Branching::kStable;
   friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 
@@ -308,5 +315,6 @@ const char* ToString(Fixity fixity);
 const char* ToString(Side side);
 const char* ToString(Interpolation interpolation);
 const char* ToString(ImperfectionPattern pattern);
+const char* ToString(Branching branching);
 
 }  // namespace drape

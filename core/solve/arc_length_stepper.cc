@@ -202,3 +202,118 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
 }
 
 }  // namespace drape
+
+namespace drape {
+
+int ArcLengthStepper::LambdaDirection(const ShellState& state,
+                                      double lambda,
+                                      const PathDirection& secant) {
+  const double speed = loading_.PrescribedSpeed(lambda, state);
+  const double psi2 = psi_ * psi_ + speed * speed;
+  const Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
+  system_.Factorize();
+  const Eigen::VectorXd t_i = Translations(system_.Solve(f0));
+  return secant.translation.dot(t_i) + psi2 * secant.lambda >= 0 ? 1 : -1;
+}
+
+ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
+                                             double lambda,
+                                             const Eigen::VectorXd& mode,
+                                             double amplitude,
+                                             double rotation_length,
+                                             const CancellationToken* cancel) {
+  const DofMap& dofs = system_.dofs();
+  ContinuationStep out;
+  // The metric: 1 on translations, ℓ² on rotations.
+  const Eigen::VectorXd metric =
+      translation_mask_ + (rotation_length * rotation_length) *
+                              (Eigen::VectorXd::Ones(mode.size()) - translation_mask_);
+  const double mode_norm = std::sqrt(mode.cwiseAbs2().dot(metric));
+  if (!(mode_norm > 0)) {
+    out.reason = "the mode is zero";
+    return out;
+  }
+  const Eigen::VectorXd n = metric.cwiseProduct(mode) / mode_norm;
+  const Eigen::VectorXd predictor = (amplitude / mode_norm) * mode;
+  ApplyIncrement(dofs.Expand(predictor), state);
+  Eigen::VectorXd q = predictor;        // accumulated free increments, all DOFs
+  Eigen::VectorXd a = Translations(q);  // the same, translations only
+  double b = 0;                         // accumulated Δλ
+  out.iterations = 1;
+  out.arc_length = std::abs(amplitude);
+  NewtonSettings judge = newton_;
+  judge.relative_to_force_level = true;
+  double last_correction = INFINITY;
+  for (int it = 0;; ++it) {
+    if (cancel) cancel->WaitWhilePaused();
+    if (cancel && cancel->IsCancelled()) {
+      out.status = NewtonOutcome::Status::kCancelled;
+      out.reason = "cancelled";
+      return out;
+    }
+    if (!IsFinite(state)) {
+      out.status = NewtonOutcome::Status::kDiverged;
+      out.reason = "the state is not finite";
+      return out;
+    }
+    const Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
+    const Eigen::VectorXd f_ext = loading_.External(lambda, state);
+    const Eigen::VectorXd r = system_.Residual(f_ext);
+    const double norm = r.norm();
+    const double level = system_.ForceLevel(f_ext);
+    const double ratio = level > 0 ? norm / level : norm;
+    out.residuals.push_back(ratio);
+    if (!std::isfinite(norm) || ratio > judge.divergence_ratio) {
+      out.status = NewtonOutcome::Status::kDiverged;
+      out.reason = "the residual grew by a factor " + Number(ratio);
+      return out;
+    }
+    out.convergence =
+        judge.Judge(out.residuals, norm, system_.RoundOffLevel(state), last_correction);
+    if (out.convergence == Convergence::kStalled) {
+      out.status = NewtonOutcome::Status::kStalled;
+      out.reason = StallReason(ratio, judge.tolerance);
+      return out;
+    }
+    if (out.convergence != Convergence::kNotYet) {
+      if (std::abs(n.dot(q) - amplitude) > 0.5 * std::abs(amplitude)) {
+        out.status = NewtonOutcome::Status::kDiverged;
+        out.reason = "the corrector went back towards the primary path";
+        return out;
+      }
+      out.status = NewtonOutcome::Status::kConverged;
+      out.negative_pivots = system_.Factorize().negative_pivots;
+      out.lambda = lambda;
+      out.direction = {a, b};
+      const double speed = loading_.PrescribedSpeed(lambda, state);
+      out.arc_length = std::sqrt(a.squaredNorm() + (psi_ * psi_ + speed * speed) * b * b);
+      return out;
+    }
+    if (it == judge.max_iterations) {
+      out.status = NewtonOutcome::Status::kIterationLimit;
+      out.reason = "no convergence on the branch in " + std::to_string(it) +
+                   " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")";
+      return out;
+    }
+    system_.Factorize();
+    const Eigen::VectorXd u_h = system_.Solve(-r);
+    const Eigen::VectorXd u_i = system_.Solve(f0);
+    // n·(q + u_h + δλ u_i) = amplitude. Where F₀ has no part along the mode
+    // (n·u_i = 0) λ cannot hold the hyperplane: keep it and let Δu_H do.
+    const double along = n.dot(u_i);
+    const double miss = amplitude - n.dot(q + u_h);
+    const double delta = std::abs(along) > 1e-12 * n.norm() * u_i.norm() ? miss / along : 0.0;
+    const Eigen::VectorXd correction = u_h + delta * u_i;
+    const Eigen::VectorXd full = dofs.Expand(correction);
+    q += correction;
+    a += Translations(correction);
+    b += delta;
+    lambda += delta;
+    ApplyIncrement(full, state);
+    loading_.Place(lambda, state);
+    last_correction = MaxTranslation(full);
+    ++out.iterations;
+  }
+}
+
+}  // namespace drape

@@ -69,6 +69,27 @@ class ArcLengthStepper {
                           double target,
                           const CancellationToken* cancel);
 
+  // A step onto a secondary branch (Wagner & Wriggers 1988): predictor
+  // along `mode` (over the free DOFs), λ unchanged; corrector on the
+  // hyperplane n·Δq = amplitude, λ free, where n is the mode in the metric
+  // that weighs a rotation θ as a translation θ·`rotation_length` (modes of
+  // thin fabric can be nearly all rotation). The hyperplane excludes the
+  // primary path, which runs orthogonal to the mode. `amplitude` [m] is the
+  // step's length in that metric; residuals are judged against the force
+  // level (the step adds no load).
+  ContinuationStep StepAlong(ShellState& state,
+                             double lambda,
+                             const Eigen::VectorXd& mode,
+                             double amplitude,
+                             double rotation_length,
+                             const CancellationToken* cancel);
+
+  // Which way λ goes along the path at a converged (state, λ), forward being
+  // the side of `secant` (the step that arrived there): +1 rising, −1
+  // falling. From the tangent (K⁻¹F₀, 1); a flip between two states means a
+  // limit point lies between them. Reuses the state's factorisation.
+  int LambdaDirection(const ShellState& state, double lambda, const PathDirection& secant);
+
  private:
   // Assembles at (state, λ); returns F₀ over the free DOFs.
   Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);

@@ -117,6 +117,10 @@ double EquilibriumSystem::RoundOffLevel(const ShellState& state) const {
   return std::sqrt(sum);
 }
 
+Eigen::VectorXd EquilibriumSystem::TangentDiagonal() const {
+  return tangent_.diagonal();
+}
+
 FactorizationInfo EquilibriumSystem::Factorize() {
   const auto start = std::chrono::steady_clock::now();
   // A step's predictor starts from the state the last corrector converged

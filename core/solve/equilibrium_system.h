@@ -56,6 +56,9 @@ class EquilibriumSystem {
   // free DOFs. No Newton iteration can bring ‖R‖ reliably below it.
   double RoundOffLevel(const ShellState& state) const;
 
+  // The diagonal of the last assembled tangent (free DOFs).
+  Eigen::VectorXd TangentDiagonal() const;
+
   // Factorises the last assembled tangent.
   FactorizationInfo Factorize();
   // K⁻¹ b with the last factorisation (free DOFs).

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -13,6 +14,7 @@
 
 #include "core/model/scene_error.h"
 #include "core/solve/arc_length_stepper.h"
+#include "core/solve/branch_switch.h"
 #include "core/solve/contact_setup.h"
 #include "core/solve/dof_map.h"
 #include "core/solve/element_fields.h"
@@ -30,6 +32,14 @@ constexpr double kStabilization = 1e-8;  // of the membrane stiffness, per node
 constexpr int kMaxSettlePasses = 5;
 constexpr double kPenetrationTolerance = 0.005;  // of the thickness
 constexpr int kMaxAugmentations = 8;
+// Locating a bifurcation: the bracket's arc length at most this fraction of
+// the stage's path up to it (λ_c to about 0.1 % where λ dominates Δs).
+constexpr double kLocateFraction = 1e-3;
+// The step onto a secondary branch: this fraction of the part's diagonal
+// along the critical mode (0.2 mm on a 20 cm strip). Small enough to start
+// the branch near the point, large enough that the branch's tangent is
+// definite by more than round-off.
+constexpr double kSwitchAmplitude = 1e-3;
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -120,11 +130,32 @@ struct ShellSolver::Impl {
                          int& cuts_in_a_row,
                          StageSummary& stage);
 
+  // Hands a converged step to the observers. A change of the negative
+  // pivots is recorded as a stability event: `classified` says what it was
+  // (null: a change at fixed λ or under load control, kept as a bifurcation
+  // followed on the primary path).
   bool Emit(int stage_index,
             int stage_step,
             double lambda,
             const StageLoading& loading,
-            const ContinuationStep& step);
+            const ContinuationStep& step,
+            const StabilityEvent* classified = nullptr);
+  // What a change of the count at a converged step is: a limit point when
+  // λ's direction along the path flipped, else a bifurcation.
+  StabilityEvent Classify(ArcLengthStepper& stepper, const ContinuationStep& step);
+  // At a bifurcation under `stable` branching: locates it, switches to a
+  // secondary branch and emits the points reached (the bifurcation, the
+  // first point on the branch); the stepping goes on from there. False when
+  // the run must stop (no branch: kNoStableBranch; cancelled).
+  bool PassBifurcation(int index,
+                       const StageLoading& loading,
+                       ArcLengthStepper& stepper,
+                       const PathPoint& start,
+                       const PathDirection* previous,
+                       const PathPoint& crossing,
+                       StabilityEvent event,
+                       StageSummary& stage,
+                       PathPoint& reached);
   // Augmented-Lagrangian passes at a converged step until the penetration is
   // within kPenetrationTolerance of the thickness (or kMaxAugmentations).
   void Augment(double lambda, const StageLoading& loading, ContinuationStep& step);
@@ -154,6 +185,14 @@ struct ShellSolver::Impl {
   SolveSummary summary;
   Clock::time_point start;
   int last_negative_pivots = 0;
+  // +1 while λ rises along the stage's path, −1 after a limit point turned it.
+  int lambda_direction = 1;
+  double stage_path_length = 0;  // Σ arc lengths accepted in the stage [m]
+  // The mean element edge [m]: how far a nodal rotation moves its neighbours.
+  double element_size = 0;
+  // The reference surface's offsets from the flat plane (free DOFs at use):
+  // decides the sign of a critical mode where both signs are stable.
+  Eigen::VectorXd imperfection;
 };
 
 DofMap ShellSolver::Impl::StageDofs() const {
@@ -237,7 +276,8 @@ bool ShellSolver::Impl::Emit(int stage_index,
                              int stage_step,
                              double lambda,
                              const StageLoading& loading,
-                             const ContinuationStep& converged) {
+                             const ContinuationStep& converged,
+                             const StabilityEvent* classified) {
   ContinuationStep result = converged;
   if (contact && augment_contact) Augment(lambda, loading, result);
   // The steppers refuse non-finite trial states; this keeps the promise that
@@ -286,10 +326,24 @@ bool ShellSolver::Impl::Emit(int stage_index,
   step.elapsed_s = SecondsSince(start);
 
   // Against the unloaded start (0 negative pivots), so that a first step that
-  // already lands past a buckling point is reported too.
-  if (result.negative_pivots != last_negative_pivots)
-    summary.stability_events.push_back(
-        {stage_index, step.step, lambda, last_negative_pivots, result.negative_pivots});
+  // already lands past a buckling point is reported too. A switch onto a
+  // stable branch keeps the count, and is an event all the same.
+  if (result.negative_pivots != last_negative_pivots || classified) {
+    StabilityEvent e;
+    if (classified) {
+      e = *classified;
+    } else {
+      e.kind = StabilityKind::kBifurcation;
+      e.branch = Branch::kFundamental;
+      e.lambda = lambda;
+    }
+    e.stage = stage_index;
+    e.step = step.step;
+    e.negative_pivots_before = last_negative_pivots;
+    e.negative_pivots_after = result.negative_pivots;
+    if (e.branch != Branch::kStable) e.negative_pivots_fundamental = result.negative_pivots;
+    summary.stability_events.push_back(e);
+  }
   last_negative_pivots = result.negative_pivots;
 
   const auto observe_start = Clock::now();
@@ -490,12 +544,39 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
       return false;
     }
     cuts_in_a_row = 0;
+    std::optional<StabilityEvent> event;
+    if (step.negative_pivots != last_negative_pivots) event = Classify(stepper, step);
+    // Only from a stable state: between a limit point and the next one the
+    // path is unstable already (a real part snaps through it), and the
+    // branches of a bifurcation there are no more observable than the
+    // primary path, which leads on to the stable states beyond.
+    if (event && event->kind == StabilityKind::kBifurcation && last_negative_pivots == 0 &&
+        step.negative_pivots > 0 && options.branching == Branching::kStable) {
+      PathPoint branch;
+      if (!PassBifurcation(index,
+                           loading,
+                           stepper,
+                           PathPoint{saved, lambda, {}},
+                           has_previous ? &previous : nullptr,
+                           PathPoint{state, event->lambda, step},
+                           *event,
+                           stage,
+                           branch))
+        return false;
+      lambda = branch.lambda;
+      previous = branch.step.direction;
+      has_previous = true;
+      // Grow from the switch's own length: the branch starts near the point.
+      arc_length = std::min(branch.step.arc_length, max_arc_length);
+      continue;
+    }
     lambda = step.landed ? 1.0 : step.lambda;
     previous = step.direction;
     has_previous = true;
     ++stage.steps;
     stage.final_lambda = lambda;
-    if (!Emit(index, stage.steps, lambda, loading, step)) return false;
+    stage_path_length += step.arc_length;
+    if (!Emit(index, stage.steps, lambda, loading, step, event ? &*event : nullptr)) return false;
     arc_length = step.arc_length;
     if (options.acceleration) {
       const double gamma =
@@ -505,6 +586,84 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
     arc_length = std::min(arc_length, max_arc_length);
   }
   return true;
+}
+
+StabilityEvent ShellSolver::Impl::Classify(ArcLengthStepper& stepper,
+                                           const ContinuationStep& step) {
+  StabilityEvent e;
+  const int direction = stepper.LambdaDirection(state, step.lambda, step.direction);
+  e.kind = direction != lambda_direction ? StabilityKind::kLimit : StabilityKind::kBifurcation;
+  e.branch = e.kind == StabilityKind::kLimit ? Branch::kNone : Branch::kFundamental;
+  e.lambda = step.landed ? 1.0 : step.lambda;
+  lambda_direction = direction;
+  return e;
+}
+
+bool ShellSolver::Impl::PassBifurcation(int index,
+                                        const StageLoading& loading,
+                                        ArcLengthStepper& stepper,
+                                        const PathPoint& start,
+                                        const PathDirection* previous,
+                                        const PathPoint& crossing,
+                                        StabilityEvent event,
+                                        StageSummary& stage,
+                                        PathPoint& reached) {
+  const std::string& name = scene.stages[index].name;
+  BifurcationSettings settings;
+  settings.locate_fraction = kLocateFraction;
+  settings.path_before = stage_path_length;
+  settings.amplitude = kSwitchAmplitude * model.characteristic_length;
+  settings.rotation_length = element_size;
+  if (imperfection.size() == model.DofCount()) settings.imperfection = dofs->Restrict(imperfection);
+  const int before = last_negative_pivots;
+  const BranchSwitch sw =
+      SwitchBranch(stepper, *system, start, previous, crossing, before, settings, cancel);
+  stage.iterations += sw.iterations;
+  summary.iterations += sw.iterations;
+  if (sw.cancelled) {
+    state = start.state;
+    Stop(Termination::kCancelled, "cancelled in stage '" + name + "' at a bifurcation");
+    return false;
+  }
+  if (!sw.switched) {
+    state = start.state;
+    char where[160];
+    std::snprintf(where,
+                  sizeof where,
+                  "stage '%s': the path bifurcates at λ = %.6g (negative pivots %d -> %d) and "
+                  "no branch past it could be followed: ",
+                  name.c_str(),
+                  sw.lambda,
+                  before,
+                  sw.negative_pivots_fundamental);
+    Stop(Termination::kNoStableBranch,
+         where + sw.failure +
+             ". The primary path past it is unstable; solver.branching: fundamental follows "
+             "it anyway");
+    return false;
+  }
+  if (sw.bifurcation) {
+    state = sw.bifurcation->state;
+    ++stage.steps;
+    stage.final_lambda = sw.bifurcation->lambda;
+    stage_path_length += sw.bifurcation->step.arc_length;
+    if (!Emit(index, stage.steps, sw.bifurcation->lambda, loading, sw.bifurcation->step))
+      return false;
+  }
+  state = sw.branch.state;
+  event.lambda = sw.lambda;
+  event.branch = sw.kind;
+  event.negative_pivots_fundamental = sw.negative_pivots_fundamental;
+  event.modes = sw.modes;
+  event.mode_max_displacement = sw.max_displacement;
+  event.switch_iterations = sw.iterations;
+  event.switch_s = sw.seconds;
+  ++summary.branch_switches;
+  ++stage.steps;
+  stage.final_lambda = sw.branch.lambda;
+  stage_path_length += sw.branch.step.arc_length;
+  reached = sw.branch;
+  return Emit(index, stage.steps, sw.branch.lambda, loading, sw.branch.step, &event);
 }
 
 bool ShellSolver::Impl::RunStage(int index) {
@@ -550,6 +709,8 @@ bool ShellSolver::Impl::RunStage(int index) {
       if (!move.obstacle.empty() && scene.obstacles[o].name == move.obstacle)
         moved.push_back({static_cast<int>(o), &move.path, state.obstacles.at(o)});
   const StageLoading loading(model, spec, Holds(spec), weight_done, loads_done, std::move(moved));
+  lambda_direction = 1;
+  stage_path_length = 0;
 
   bool ok;
   if (spec.kind == StageKind::kHold)
@@ -559,6 +720,22 @@ bool ShellSolver::Impl::RunStage(int index) {
   else
     ok = RunArcLength(index, loading, stage);
   if (ok && contact && contact->stabilization() > 0) ok = Settle(index, loading, stage);
+  if (ok && last_negative_pivots > 0) {
+    // Only with `fundamental` branching, past a limit point, or on a branch
+    // that is itself unstable: say so rather than let it pass as converged.
+    char note[320];
+    std::snprintf(
+        note,
+        sizeof note,
+        "stage '%s' ends at step %d on an unstable equilibrium: its tangent has %d "
+        "negative pivot%s (a real part would not rest there)%s",
+        spec.name.c_str(),
+        summary.steps,
+        last_negative_pivots,
+        last_negative_pivots == 1 ? "" : "s",
+        options.branching == Branching::kFundamental ? "; solver.branching is fundamental" : "");
+    summary.warnings.push_back(note);
+  }
   if (ok) {
     weight_done = loading.WeightFactor(1.0);
     loads_done = loading.LoadFactor(1.0);
@@ -619,6 +796,11 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.weight_done = m.loads_done = 0;
   m.released.assign(m.model.grippers.size(), false);
   m.last_negative_pivots = 0;
+  m.element_size = MeanEdgeLength(m.model.mesh);
+  m.imperfection = Eigen::VectorXd::Zero(m.model.DofCount());
+  for (int i = 0; i < m.model.NodeCount(); ++i)
+    m.imperfection(kDofsPerNode * i + 2) = m.model.mesh.positions(i, 2) - m.scene.fabric.elevation;
+  if (m.imperfection.cwiseAbs().maxCoeff() == 0) m.imperfection.resize(0);
   m.retired_timers = SystemTimers();
   m.system.reset();
   m.dofs.reset();

@@ -26,8 +26,71 @@ const char* ToString(Termination t) {
       return "ill-posed stage";
     case Termination::kNumericalFailure:
       return "numerical failure";
+    case Termination::kNoStableBranch:
+      return "no branch past a bifurcation";
   }
   return "?";
+}
+
+const char* ToString(StabilityKind kind) {
+  return kind == StabilityKind::kLimit ? "limit" : "bifurcation";
+}
+
+const char* ToString(Branch branch) {
+  switch (branch) {
+    case Branch::kFundamental:
+      return "fundamental";
+    case Branch::kStable:
+      return "stable";
+    case Branch::kNone:
+      return "none";
+  }
+  return "?";
+}
+
+std::string Describe(const StabilityEvent& e) {
+  char line[320];
+  if (e.kind == StabilityKind::kLimit || e.branch == Branch::kNone) {
+    std::snprintf(line,
+                  sizeof line,
+                  "%s point at stage %d step %d, lambda %.6g: negative pivots %d -> %d",
+                  ToString(e.kind),
+                  e.stage,
+                  e.step,
+                  e.lambda,
+                  e.negative_pivots_before,
+                  e.negative_pivots_after);
+  } else if (e.branch == Branch::kFundamental) {
+    std::snprintf(line,
+                  sizeof line,
+                  "bifurcation at stage %d step %d, lambda %.6g: negative pivots %d -> %d, "
+                  "followed the fundamental path%s",
+                  e.stage,
+                  e.step,
+                  e.lambda,
+                  e.negative_pivots_before,
+                  e.negative_pivots_after,
+                  e.negative_pivots_after > e.negative_pivots_before ? " (unstable past it)" : "");
+  } else {
+    std::snprintf(line,
+                  sizeof line,
+                  "bifurcation at stage %d, lambda %.6g: negative pivots %d -> %d on the primary "
+                  "path; switched to the %s branch (%d negative, step %d) along %d mode%s, "
+                  "largest displacement %.3g m; %d iterations, %.3f s",
+                  e.stage,
+                  e.lambda,
+                  e.negative_pivots_before,
+                  e.negative_pivots_fundamental,
+                  ToString(e.branch),
+                  e.negative_pivots_after,
+                  e.step,
+                  e.modes,
+                  e.modes == 1 ? "" : "s",
+                  e.mode_max_displacement,
+                  e.switch_iterations,
+                  e.switch_s);
+  }
+  return line;
 }
 
 std::string SolveSummary::BriefReport() const {
@@ -81,17 +144,7 @@ std::string SolveSummary::FullReport() const {
                   st.time_s);
     s << row;
   }
-  for (const auto& e : stability_events) {
-    std::snprintf(row,
-                  sizeof row,
-                  "  stability: negative pivots %d -> %d at stage %d step %d, lambda %.6g\n",
-                  e.negative_pivots_before,
-                  e.negative_pivots_after,
-                  e.stage,
-                  e.step,
-                  e.lambda);
-    s << row;
-  }
+  for (const auto& e : stability_events) s << "  " << Describe(e) << "\n";
   std::snprintf(row,
                 sizeof row,
                 "  time: total %.3f s, assembly %.3f s, factorisation %.3f s (%d, %d indefinite, "

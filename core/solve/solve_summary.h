@@ -21,19 +21,46 @@ enum class Termination {
   kInvalidInput,       // options or scene rejected before any work
   kIllPosed,           // a stage cannot be solved as posed (e.g. nothing holds the fabric)
   kNumericalFailure,   // the linear algebra failed (e.g. out of memory in the factorisation)
+  kNoStableBranch,     // a bifurcation was crossed and no secondary branch could be followed
 };
 
 const char* ToString(Termination termination);
+
+// What the number of negative pivots changing between two converged steps
+// means: a limit point (λ turns along the path: snap-through, snap-back) or a
+// bifurcation (the count changes while λ keeps its direction).
+enum class StabilityKind { kLimit, kBifurcation };
+// Which way the path went on from a bifurcation.
+enum class Branch {
+  kFundamental,  // on along the primary path (solver.branching: fundamental)
+  kStable,       // switched to a secondary branch with the pivots of before
+  kNone,         // not a bifurcation (a limit point), or no branch was found
+};
+const char* ToString(StabilityKind kind);  // "limit", "bifurcation"
+const char* ToString(Branch branch);       // "fundamental", "stable", "none"
 
 // A change in the number of negative pivots between two converged steps: the
 // path crossed a limit or bifurcation point.
 struct StabilityEvent {
   int stage = -1;
-  int step = 0;
-  double lambda = 0;
+  int step = 0;       // the first step after the change (on the branch taken)
+  double lambda = 0;  // where it happened (a located bifurcation: its λ)
   int negative_pivots_before = 0;
-  int negative_pivots_after = 0;
+  int negative_pivots_after = 0;  // on the path the step took (the branch when switched)
+  StabilityKind kind = StabilityKind::kLimit;
+  Branch branch = Branch::kNone;
+  // Bifurcations: the pivots on the primary path just past the point, how
+  // many critical modes, the largest nodal translation of the switch onto the
+  // branch [m], and what locating and switching cost.
+  int negative_pivots_fundamental = 0;
+  int modes = 0;
+  double mode_max_displacement = 0;
+  int switch_iterations = 0;
+  double switch_s = 0;
 };
+
+// One line: what happened, where, and which way the path went on.
+std::string Describe(const StabilityEvent& event);
 
 struct StageSummary {
   std::string name;
@@ -62,7 +89,8 @@ struct SolveSummary {
   std::vector<StageSummary> stages;
   std::vector<StabilityEvent> stability_events;
   std::vector<std::string> notes;     // what was used instead of what was asked, and why
-  std::vector<std::string> warnings;  // about the scene (e.g. a softening bending law)
+  std::vector<std::string> warnings;  // about the scene (e.g. a softening bending law) and
+                                      // about the result (a stage ending on an unstable state)
 
   // Bending: the largest principal curvature reached in any converged step,
   // against the range the bending laws were measured or fitted over (∞ when
@@ -75,6 +103,7 @@ struct SolveSummary {
   double max_penetration = 0;          // over every converged step [m]
   double max_stabilization_force = 0;  // largest nodal spring force, any step [N]
   int augmentations = 0;               // augmented-Lagrangian passes (each one Newton solve)
+  int branch_switches = 0;             // bifurcations passed onto a secondary branch
 
   double total_s = 0;
   double assembly_s = 0;

@@ -27,6 +27,7 @@ SolverOptions SolverOptions::FromScene(const SolverSettings& settings) {
   o.max_iterations = settings.max_iterations;
   o.max_step_cuts = settings.max_step_cuts;
   o.psi = settings.psi.value_or(0.0);
+  o.branching = settings.branching;
   return o;
 }
 

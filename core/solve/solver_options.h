@@ -38,6 +38,9 @@ struct SolverOptions {
   // ψ [m]: weight of λ against lengths in the arc-length constraint; 0 uses
   // the part's characteristic length (its diagonal).
   double psi = 0;
+  // At a bifurcation: switch to the branch a real part takes (kStable) or
+  // follow the primary path (kFundamental, the paper's behaviour).
+  Branching branching = Branching::kStable;
   // Threads for element assembly; 0 uses OpenMP's default.
   int threads = 0;
 

@@ -250,10 +250,11 @@ TEST(ValidateCli, EveryExampleSceneValidates) {
 TEST(ValidateCli, SummaryCountsNodesElementsDofsAndSelections) {
   CommandResult r = RunDrape("validate " + (test::ScenesDir() / "strip-fold.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  // 80 × 1 elements: 81 × 2 = 162 nodes (the paper's count), 5 DOFs each.
-  EXPECT_NE(r.output.find("162 nodes, 80 elements, 810 DOFs"), std::string::npos) << r.output;
+  // 80 × 2 elements: 81 × 3 = 243 nodes (the paper's 80 × 1 doubled across
+  // the width, see the scene's description), 5 DOFs each.
+  EXPECT_NE(r.output.find("243 nodes, 160 elements, 1215 DOFs"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("grippers[0].select"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("2 nodes"), std::string::npos) << r.output;  // the left edge
+  EXPECT_NE(r.output.find("3 nodes"), std::string::npos) << r.output;  // the left edge
   EXPECT_NE(r.output.find("3: SW (gravity), R (move), T (move)"), std::string::npos) << r.output;
 }
 

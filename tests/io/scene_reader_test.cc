@@ -88,7 +88,7 @@ TEST(SceneReader, ResolvesPaperUnitsToSI) {
   const auto& e = std::get<IsotropicMembrane>(strip.material.membrane);
   EXPECT_NEAR(e.youngs_modulus, 4196 * kOzf / (kInch * kInch), 1e-6);
   EXPECT_NEAR(strip.material.areal_weight, 4.019e-3 * kOzf / (kInch * kInch), 1e-12);
-  EXPECT_EQ(strip.fabric.mesh.elements, (std::array<int, 2>{80, 1}));
+  EXPECT_EQ(strip.fabric.mesh.elements, (std::array<int, 2>{80, 2}));
   ASSERT_EQ(strip.stages.size(), 3u);
   EXPECT_DOUBLE_EQ(strip.stages[0].initial_increment, 2.70782672e-6);
   const auto& arc = std::get<ArcPath>(strip.stages[1].moves[0].path);

@@ -158,6 +158,7 @@ struct RoofSpec {
   double load = 1.1 * kPmax;  // the point load at λ = 1 (kPointLoad)
   double push = 40.0;         // the centre's downward travel at λ = 1 (kCentralDeflection)
   double increment = 0.03;    // Δλ of the first step; later steps keep its arc length
+  Branching branching = Branching::kStable;
 };
 
 // The roof with both straight edges (x = ±R sin θ) hinged, the curved edges
@@ -192,6 +193,7 @@ Scene RoofScene(const RoofSpec& spec) {
   }
   scene.stages.push_back(stage);
   scene.probes.push_back({"C", {0.0, 0.0}});
+  scene.solver.branching = spec.branching;
   return scene;
 }
 
@@ -240,12 +242,7 @@ RoofRun RunRoof(const RoofSpec& spec) {
   std::printf("%5s %9s %8s %9s %5s\n", "step", "lambda", "W_C", "P/Pmax", "neg");
   for (const auto& q : run.path)
     std::printf("%5d %9.5f %8.3f %9.4f %5d\n", q.step, q.lambda, q.at.w, q.at.p, q.negative_pivots);
-  for (const auto& e : run.summary.stability_events)
-    std::printf("  stability event: step %d, λ = %.5f, negative pivots %d -> %d\n",
-                e.step,
-                e.lambda,
-                e.negative_pivots_before,
-                e.negative_pivots_after);
+  for (const auto& e : run.summary.stability_events) std::printf("  %s\n", Describe(e).c_str());
   return run;
 }
 
@@ -425,9 +422,18 @@ TEST(HingedRoof, ThickRoofSnapsThroughUnderPointLoad) {
     }
   }
   EXPECT_GE(falling, 5);
-  ASSERT_FALSE(run.summary.stability_events.empty());
-  EXPECT_EQ(run.summary.stability_events.front().negative_pivots_before, 0);
-  EXPECT_GT(run.summary.stability_events.front().negative_pivots_after, 0);
+  // Both limit points are reported as such: the first makes the tangent
+  // indefinite, the second definite again (between them a bifurcation on the
+  // unstable part is passed on the primary path, which leads on to them).
+  const auto& events = run.summary.stability_events;
+  ASSERT_GE(events.size(), 2u);
+  EXPECT_EQ(events.front().kind, StabilityKind::kLimit);
+  EXPECT_EQ(events.front().negative_pivots_before, 0);
+  EXPECT_GT(events.front().negative_pivots_after, 0);
+  EXPECT_EQ(events.back().kind, StabilityKind::kLimit);
+  EXPECT_GT(events.back().negative_pivots_before, 0);
+  EXPECT_EQ(events.back().negative_pivots_after, 0);
+  for (const auto& e : events) EXPECT_NE(e.branch, Branch::kStable) << Describe(e);
 
   CompareWithReference(kReferenceThick, fe, 0.03);
   CompareTurns(kReferenceThick, fe, /*turning_w=*/false, 0.02, 0.015);
@@ -439,6 +445,7 @@ TEST(HingedRoof, ThinRoofSnapsBackUnderCentralDeflection) {
   spec.drive = Drive::kCentralDeflection;
   spec.push = 40.0;  // past the last reference point, W_C = 38.45
   spec.increment = 0.015;
+  spec.branching = Branching::kFundamental;  // the reference is the symmetric path
   const RoofRun run = RunRoof(spec);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   ASSERT_DOUBLE_EQ(run.path.back().lambda, 1.0);
@@ -481,6 +488,7 @@ TEST(HingedRoof, ThinRoofSnapsBackUnderPointLoad) {
   spec.drive = Drive::kPointLoad;
   spec.load = 1.1 * kPmax;
   spec.increment = 0.01;
+  spec.branching = Branching::kFundamental;  // the reference is the symmetric path
   const RoofRun run = RunRoof(spec);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   const auto fe = Curve(run.path);
@@ -491,6 +499,36 @@ TEST(HingedRoof, ThinRoofSnapsBackUnderPointLoad) {
   ASSERT_FALSE(run.summary.stability_events.empty());
   CompareWithReference(kReferenceThin, fe, 0.05);
   CompareTurns(kReferenceThin, fe, /*turning_w=*/true, 0.02, 0.015);
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// The thin roof's symmetric path bifurcates before its limit point: at
+// P = 0.1755 Pmax an antisymmetric mode's eigenvalue crosses zero while the
+// load still rises (the reference's limit point is at 0.195 Pmax). Both
+// branches from that point are unstable under load control (a subcritical
+// bifurcation): a real roof snaps there. With `stable` branching the run
+// must say so and stop, keeping every step, rather than pass the point.
+TEST(HingedRoof, ThinRoofUnderLoadStopsAtItsSubcriticalBifurcation) {
+  RoofSpec spec;
+  spec.thickness = 6.35;
+  spec.drive = Drive::kPointLoad;
+  spec.load = 1.1 * kPmax;
+  spec.increment = 0.01;
+  const RoofRun run = RunRoof(spec);
+  EXPECT_EQ(run.summary.termination, Termination::kNoStableBranch) << run.summary.FullReport();
+  EXPECT_NE(run.summary.message.find("no stable branch"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("snap"), std::string::npos) << run.summary.message;
+  ASSERT_GE(run.path.size(), 2u);
+  const double p = run.path.back().at.p;
+  std::printf("stopped at P = %.4f Pmax\n", p);
+  EXPECT_GT(p, 0.15);
+  EXPECT_LT(p, 0.195);  // below the symmetric path's limit point
+  for (const auto& q : run.path) EXPECT_EQ(q.negative_pivots, 0) << "step " << q.step;
 }
 
 }  // namespace

@@ -35,6 +35,7 @@
 
 #include "core/model/fabric_mesh.h"
 #include "core/solve/shell_solver.h"
+#include "support/elastica.h"
 #include "support/strip_scene.h"
 
 namespace drape {
@@ -42,30 +43,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// ---- the clamped–clamped elastica, closed form ---------------------------------
+// ---- the clamped–clamped elastica, closed form (support/elastica.h) --------
 
-struct Elastica {
-  double k = 0;           // modulus sin(α/2)
-  double force = 0;       // μ = P L² / EI
-  double shortening = 0;  // Δ / L
-  double height = 0;      // δ / L, mid-span over the clamps
-  double curvature = 0;   // θ'(0) L at the clamps
-};
-
-Elastica ClosedForm(double k) {
-  const double kk = std::comp_ellint_1(k), ek = std::comp_ellint_2(k);
-  return {k, 16 * kk * kk, 2 - 2 * ek / kk, k / kk, 8 * k * kk};
-}
-
-// Δ/L = 2 − 2E/K rises monotonically from 0 (k = 0) to 2 (k → 1): bisection on k.
-Elastica ClosedFormAtShortening(double shortening) {
-  double lo = 0, hi = 1 - 1e-12;
-  for (int i = 0; i < 100; ++i) {
-    const double mid = (lo + hi) / 2;
-    (ClosedForm(mid).shortening < shortening ? lo : hi) = mid;
-  }
-  return ClosedForm((lo + hi) / 2);
-}
+using test::ClosedForm;
+using test::ClosedFormAtShortening;
+using test::Elastica;
 
 // ---- the same elastica by shooting on the ODE -----------------------------------
 //
@@ -164,7 +146,8 @@ StripRun RunStrip(const test::StripSpec& spec,
                   double shortening,
                   double imperfection,
                   double initial_increment,
-                  bool acceleration) {
+                  bool acceleration,
+                  Branching branching = Branching::kStable) {
   Scene scene = test::CantileverStrip(spec);  // support "root": left edge clamped
   scene.name = "clamped-clamped strip";
   scene.grippers.push_back({"end", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kClamp});
@@ -177,6 +160,7 @@ StripRun RunStrip(const test::StripSpec& spec,
   stage.moves.push_back({"end", LinePath{{-shortening * spec.length, 0.0, 0.0}}, {}});
   scene.stages.push_back(stage);
   scene.solver.acceleration = acceleration;
+  scene.solver.branching = branching;
   // The default ‖R‖/‖R₀‖ ≤ 1e-5 is relative to the step's Δλ·‖F₀‖, and for a
   // moved gripper F₀ = −K_fp ∂u_p/∂λ is the membrane stiffness of the
   // elements next to the gripper times the path (EA/ℓₑ·Δ ~ 200 N), a million
@@ -361,7 +345,10 @@ TEST(PostBuckling, PerfectStripTangentTurnsIndefiniteAtTheEulerLoad) {
   const StripConstants c = Constants();
   const double first = 1.0, second = std::pow(4.493409457909064 / kPi, 2);
   const double shortening = 2.2 * c.euler_strain;
-  const StripRun run = RunStrip(c.spec, shortening, 0.0, 0.005, /*acceleration=*/false);
+  // `fundamental`: the straight branch is followed through the bifurcations
+  // (`stable` would switch to the buckled branch at the first one).
+  const StripRun run =
+      RunStrip(c.spec, shortening, 0.0, 0.005, /*acceleration=*/false, Branching::kFundamental);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
 
   double max_height = 0;

@@ -267,7 +267,7 @@ TEST_F(Widgets, EditsUndoRedoAndSurviveSaveAndReopen) {
   emit panel->elementsX()->editingFinished();
   ASSERT_TRUE(doc->scene().fabric.mesh.elements);
   EXPECT_EQ((*doc->scene().fabric.mesh.elements)[0], 40);
-  EXPECT_EQ(panel->meshInfo()->text().toStdString(), "82 nodes, 40 elements, 410 DOFs");
+  EXPECT_EQ(panel->meshInfo()->text().toStdString(), "123 nodes, 80 elements, 615 DOFs");
 
   QLineEdit* h = panel->thickness()->edit();
   h->setText("0.6 mm");
