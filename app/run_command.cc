@@ -153,11 +153,8 @@ int RunRun(const RunArgs& args) {
   }
   if (!args.quiet) {
     std::cerr << (args.verbose ? summary.FullReport() : summary.BriefReport() + "\n");
-    for (const auto& e : summary.stability_events)
-      std::cerr << "  stability changed at step " << e.step << " (lambda " << e.lambda
-                << "): negative pivots " << e.negative_pivots_before << " -> "
-                << e.negative_pivots_after << "\n";
     if (!args.verbose) {
+      for (const auto& e : summary.stability_events) std::cerr << "  " << Describe(e) << "\n";
       for (const auto& warning : summary.warnings) std::cerr << "  warning: " << warning << "\n";
       for (const auto& note : summary.notes) std::cerr << "  note: " << note << "\n";
     }

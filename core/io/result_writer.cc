@@ -110,6 +110,7 @@ void ResultWriter::AddStep(const StepState& step) {
          {"arc_length", step.arc_length},
          {"negative_pivots", step.negative_pivots},
          {"max_curvature", step.max_curvature},
+         {"law_curvature", step.law_curvature},
          {"reactions", Named(step.reactions)},
          {"probes", Named(step.probes)}};
   if (step.contact) {
@@ -118,6 +119,12 @@ void ResultWriter::AddStep(const StepState& step) {
                     {"max_penetration", step.contact->max_penetration}};
     if (step.contact->max_stabilization_force > 0)
       s["contact"]["max_stabilization_force"] = step.contact->max_stabilization_force;
+    if (step.contact->penetration_target > 0) {
+      s["contact"]["penetration_target"] = step.contact->penetration_target;
+      s["contact"]["augmentation_passes"] = step.contact->augmentation_passes;
+      if (!step.contact->augmentation_shortfall.empty())
+        s["contact"]["penetration_target_missed"] = step.contact->augmentation_shortfall;
+    }
   }
   // Obstacles a stage moved: where each one is (world = R x_scene + t).
   for (size_t o = 0; o < step.state.obstacles.size() && o < impl_->obstacle_names.size(); ++o) {
@@ -189,6 +196,7 @@ void ResultWriter::Finish(const SolveSummary& summary) {
   // JSON has no infinity: a linear law's unlimited range is null.
   r["bending"] = {
       {"max_curvature", summary.max_curvature},
+      {"max_law_curvature", summary.max_law_curvature},
       {"valid_to",
        std::isfinite(summary.bending_valid_to) ? json(summary.bending_valid_to) : json(nullptr)}};
   if (summary.contact_penalty > 0)

@@ -64,6 +64,9 @@ class IsotropicPlateLaw final : public PlateBendingLaw {
     response = PlateBendingResponse{};
     AddNormLaw(*law_, c_, curvature, want_tangent, response);
   }
+  double LawCurvature(const Eigen::Vector3d& curvature) const override {
+    return std::sqrt(std::max(0.0, curvature.dot(c_ * curvature)));
+  }
 
  private:
   std::shared_ptr<const MomentCurvatureLaw> law_;
@@ -85,6 +88,10 @@ class WarpWeftPlateLaw final : public PlateBendingLaw {
     response = PlateBendingResponse{};
     AddNormLaw(*warp_, warp_norm_, curvature, want_tangent, response);
     AddNormLaw(*weft_, weft_norm_, curvature, want_tangent, response);
+  }
+  double LawCurvature(const Eigen::Vector3d& curvature) const override {
+    return std::sqrt(
+        std::max(curvature.dot(warp_norm_ * curvature), curvature.dot(weft_norm_ * curvature)));
   }
 
  private:

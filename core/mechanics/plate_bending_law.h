@@ -32,6 +32,10 @@ class PlateBendingLaw {
                         PlateBendingResponse& response) const = 0;
   // The tangent at κ = 0 (the linear law of small curvatures).
   Eigen::Matrix3d InitialTangent() const;
+  // The largest curvature at which κ evaluates a one-dimensional law (K for
+  // one law, the larger of K_warp and K_weft for two) [1/m]: what is held
+  // against the laws' measured or fitted range.
+  virtual double LawCurvature(const Eigen::Vector3d& curvature) const = 0;
 };
 
 // One law for every direction: W = W₁(K), K² = κᵀ C κ with the plane-stress

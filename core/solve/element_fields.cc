@@ -55,6 +55,18 @@ double MaxPrincipalCurvature(const ShellModel& model, const ShellState& state) {
   return per_element.size() ? per_element.maxCoeff() : 0.0;
 }
 
+double MaxLawCurvature(const ShellModel& model, const ShellState& state) {
+  const auto& law = model.section.bending_law;
+  if (!law) return MaxPrincipalCurvature(model, state);
+  double largest = 0;
+  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
+    const ElementNodes n = NodesOf(model, state, e);
+    for (const auto& k : BendingStrains(model.elements[e], n.x, n.t))
+      largest = std::max(largest, law->LawCurvature(k));
+  }
+  return largest;
+}
+
 const std::vector<FieldInfo>& Fields() {
   static const std::vector<FieldInfo> fields = {
       {FieldKind::kDisplacement, "displacement", "displacement [m]", true},

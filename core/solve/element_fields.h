@@ -18,6 +18,13 @@ namespace drape {
 // how far a fold has taken the material along its bending law.
 double MaxPrincipalCurvature(const ShellModel& model, const ShellState& state);
 
+// The largest curvature at which any Gauss point evaluates the bending laws
+// (PlateBendingLaw::LawCurvature; with linear bending, the largest principal
+// |κ|) [1/m]: what the laws' fitted range is checked against. For an
+// isotropic law K = √(κᵀCκ) is 4.8 % above the principal curvature in
+// cylindrical bending at ν = 0.3 and 69 % above it in equal two-way bending.
+double MaxLawCurvature(const ShellModel& model, const ShellState& state);
+
 // What a colour field shows.
 enum class FieldKind {
   kDisplacement,    // |φ − φ₀| per node [m]

@@ -145,6 +145,7 @@ void NodeContact::Add(const ShellState& state,
                  });
   if (stabilization_ <= 0.0) return;
   for (int i = 0; i < n; ++i) {
+    if (!held_.empty() && held_[i]) continue;
     internal.segment<3>(kDofsPerNode * i) +=
         stabilization_ * (state.positions.row(i) - anchors_.row(i)).transpose();
     if (blocks) (*blocks)[i].diagonal().array() += stabilization_;
@@ -213,6 +214,7 @@ ContactReport NodeContact::Report(const ShellState& state) const {
   }
   if (stabilization_ > 0.0)
     for (int i = 0; i < state.NodeCount(); ++i) {
+      if (!held_.empty() && held_[i]) continue;
       const Eigen::Vector3d f =
           -stabilization_ * (state.positions.row(i) - anchors_.row(i)).transpose();
       r.stabilization_force += f;

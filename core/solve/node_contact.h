@@ -66,7 +66,13 @@ class NodeContact {
   // The stabilisation springs and the friction anchors start again from
   // `state` (a converged step).
   void Commit(const ShellState& state);
-  void SetStabilization(double per_node) { stabilization_ = per_node; }
+  // `held[i]`: node i's position is prescribed (a support or a gripper); it
+  // gets no spring, which would resist nothing and only add its force to
+  // the node's reaction. Empty: every node gets one.
+  void SetStabilization(double per_node, std::vector<bool> held = {}) {
+    stabilization_ = per_node;
+    held_ = std::move(held);
+  }
 
   // Augmented Lagrangian (Uzawa): each node's multiplier takes its present
   // normal force, so the next equilibrium needs that much less penetration.
@@ -118,6 +124,7 @@ class NodeContact {
   std::vector<double> area_;  // tributary reference area per node [m²]
   double penalty_;
   double stabilization_;
+  std::vector<bool> held_;  // nodes without a spring
   double half_thickness_;
   double friction_;
   Eigen::MatrixXd anchors_;  // node positions of the last converged step

@@ -30,8 +30,6 @@ using Clock = std::chrono::steady_clock;
 
 constexpr double kStabilization = 1e-8;  // of the membrane stiffness, per node
 constexpr int kMaxSettlePasses = 5;
-constexpr double kPenetrationTolerance = 0.005;  // of the thickness
-constexpr int kMaxAugmentations = 8;
 // Locating a bifurcation: the bracket's arc length at most this fraction of
 // the stage's path up to it (λ_c to about 0.1 % where λ dominates Δs).
 constexpr double kLocateFraction = 1e-3;
@@ -114,7 +112,10 @@ struct ShellSolver::Impl {
   bool RunHold(int index, const StageLoading& loading, StageSummary& stage);
   // Newton at a fixed λ from the present state, judged against the force
   // level (no load is added): a hold, a settle pass, an augmentation pass.
-  NewtonOutcome SolveAtFixedLambda(double lambda, const StageLoading& loading);
+  // `max_iterations` > 0 overrides the options' limit.
+  NewtonOutcome SolveAtFixedLambda(double lambda,
+                                   const StageLoading& loading,
+                                   int max_iterations = 0);
   // Counts such a solve in the stage; false (and the run stopped, saying
   // `failure` and why) when it was cancelled or did not converge.
   bool Accept(const NewtonOutcome& newton, StageSummary& stage, const std::string& failure);
@@ -157,8 +158,15 @@ struct ShellSolver::Impl {
                        StageSummary& stage,
                        PathPoint& reached);
   // Augmented-Lagrangian passes at a converged step until the penetration is
-  // within kPenetrationTolerance of the thickness (or kMaxAugmentations).
-  void Augment(double lambda, const StageLoading& loading, ContinuationStep& step);
+  // within options.penetration_tolerance of the thickness (or
+  // options.max_augmentations passes).
+  // Returns why it stopped short ("" when the target was met); a pass that
+  // did not converge is undone, and the system reassembled at the state kept.
+  struct Augmentation {
+    int passes = 0;
+    std::string shortfall;
+  };
+  Augmentation Augment(double lambda, const StageLoading& loading, ContinuationStep& step);
   void Stop(Termination t, std::string message) {
     summary.termination = t;
     summary.message = std::move(message);
@@ -170,7 +178,7 @@ struct ShellSolver::Impl {
   std::vector<bool> released;            // per gripper
   std::unique_ptr<NodeContact> contact;  // null without obstacles
   double last_stabilization_force = 0;   // of the last converged step [N]
-  // "auto" penalty: penetration held to kPenetrationTolerance by augmented-
+  // "auto" penalty: penetration held to options.penetration_tolerance by augmented-
   // Lagrangian passes. A penalty the user set is used as given.
   bool augment_contact = false;
   // The DOF map of the current stage, and the system built on it.
@@ -247,21 +255,27 @@ NewtonSettings ShellSolver::Impl::Newton() const {
   return n;
 }
 
-void ShellSolver::Impl::Augment(double lambda,
-                                const StageLoading& loading,
-                                ContinuationStep& step) {
-  const double allowed = kPenetrationTolerance * model.thickness;
-  for (int pass = 0; pass < kMaxAugmentations; ++pass) {
-    if (contact->Report(state).max_penetration <= allowed) return;
+ShellSolver::Impl::Augmentation ShellSolver::Impl::Augment(double lambda,
+                                                           const StageLoading& loading,
+                                                           ContinuationStep& step) {
+  const double allowed = options.penetration_tolerance * model.thickness;
+  Augmentation out;
+  for (; out.passes < options.max_augmentations; ++out.passes) {
+    if (contact->Report(state).max_penetration <= allowed) return out;
     const ShellState saved = state;
     const std::vector<double> multipliers = contact->multipliers();
     contact->Augment(state);
-    const NewtonOutcome newton = SolveAtFixedLambda(lambda, loading);
+    const NewtonOutcome newton =
+        SolveAtFixedLambda(lambda, loading, options.max_augmentation_iterations);
     if (newton.status != NewtonOutcome::Status::kConverged) {
-      // Keep the penalty solution; the report shows its penetration.
+      // Keep the last converged solution, and its forces: the reactions must
+      // be those of the state kept, not of the failed pass's last iterate.
       state = saved;
       contact->SetMultipliers(multipliers);
-      return;
+      system->Assemble(state, /*with_tangent=*/false);
+      out.shortfall = "augmented-Lagrangian pass " + std::to_string(out.passes + 1) +
+                      " did not converge (" + newton.reason + ")";
+      return out;
     }
     step.iterations += newton.iterations;
     step.residuals.insert(step.residuals.end(), newton.residuals.begin(), newton.residuals.end());
@@ -270,6 +284,10 @@ void ShellSolver::Impl::Augment(double lambda,
     ++summary.augmentations;
     summary.iterations += newton.iterations;
   }
+  if (contact->Report(state).max_penetration > allowed)
+    out.shortfall = "stopped after " + std::to_string(options.max_augmentations) +
+                    " augmented-Lagrangian passes";
+  return out;
 }
 
 bool ShellSolver::Impl::Emit(int stage_index,
@@ -279,7 +297,8 @@ bool ShellSolver::Impl::Emit(int stage_index,
                              const ContinuationStep& converged,
                              const StabilityEvent* classified) {
   ContinuationStep result = converged;
-  if (contact && augment_contact) Augment(lambda, loading, result);
+  Augmentation augmentation;
+  if (contact && augment_contact) augmentation = Augment(lambda, loading, result);
   // The steppers refuse non-finite trial states; this keeps the promise that
   // no observer and no file ever sees one, whatever a future path does.
   if (!IsFinite(state)) {
@@ -300,7 +319,9 @@ bool ShellSolver::Impl::Emit(int stage_index,
   step.arc_length = result.arc_length;
   step.negative_pivots = result.negative_pivots;
   step.max_curvature = MaxPrincipalCurvature(model, state);
+  step.law_curvature = MaxLawCurvature(model, state);
   summary.max_curvature = std::max(summary.max_curvature, step.max_curvature);
+  summary.max_law_curvature = std::max(summary.max_law_curvature, step.law_curvature);
   // What each support and gripper exerts on the fabric: F_int − F_ext at its
   // nodes (zero for a released gripper, whose nodes are free).
   const Eigen::VectorXd unbalanced = system->InternalForce() - loading.External(lambda, state);
@@ -316,6 +337,19 @@ bool ShellSolver::Impl::Emit(int stage_index,
     step.probes.push_back({probe.name, ProbePosition(model, probe, state)});
   if (contact) {
     step.contact = contact->Report(state);
+    if (augment_contact) {
+      step.contact->penetration_target = options.penetration_tolerance * model.thickness;
+      step.contact->augmentation_passes = augmentation.passes;
+      step.contact->augmentation_shortfall = augmentation.shortfall;
+      if (!augmentation.shortfall.empty()) {
+        ++summary.penetration_target_missed;
+        if (step.contact->max_penetration > summary.worst_missed_penetration) {
+          summary.worst_missed_penetration = step.contact->max_penetration;
+          summary.worst_missed_step = step.step;
+          summary.worst_missed_reason = augmentation.shortfall;
+        }
+      }
+    }
     summary.max_penetration = std::max(summary.max_penetration, step.contact->max_penetration);
     summary.max_stabilization_force =
         std::max(summary.max_stabilization_force, step.contact->max_stabilization_force);
@@ -343,6 +377,7 @@ bool ShellSolver::Impl::Emit(int stage_index,
     e.negative_pivots_after = result.negative_pivots;
     if (e.branch != Branch::kStable) e.negative_pivots_fundamental = result.negative_pivots;
     summary.stability_events.push_back(e);
+    step.stability_event = e;
   }
   last_negative_pivots = result.negative_pivots;
 
@@ -380,9 +415,12 @@ bool ShellSolver::Impl::RetryAfterFailure(const ContinuationStep& step,
   return true;
 }
 
-NewtonOutcome ShellSolver::Impl::SolveAtFixedLambda(double lambda, const StageLoading& loading) {
+NewtonOutcome ShellSolver::Impl::SolveAtFixedLambda(double lambda,
+                                                    const StageLoading& loading,
+                                                    int max_iterations) {
   NewtonSettings settings = Newton();
   settings.relative_to_force_level = true;
+  if (max_iterations > 0) settings.max_iterations = max_iterations;
   return SolveEquilibrium(
       *system,
       [&](const ShellState& s) { return loading.External(lambda, s); },
@@ -693,8 +731,11 @@ bool ShellSolver::Impl::RunStage(int index) {
     // fabric; 1e-8 of the membrane stiffness per node keeps such a pivot
     // well above the zero-pivot bound while its force stays small.
     const bool needed = !HoldsRestrainRigidMotion(model, stage_dofs);
-    contact->SetStabilization(needed ? kStabilization * model.section.membrane.diagonal().maxCoeff()
-                                     : 0.0);
+    std::vector<bool> held(model.NodeCount());
+    for (int i = 0; i < model.NodeCount(); ++i) held[i] = stage_dofs.IsFixed(kDofsPerNode * i);
+    contact->SetStabilization(
+        needed ? kStabilization * model.section.membrane.diagonal().maxCoeff() : 0.0,
+        std::move(held));
   }
   if (!contact && stage_dofs.FreeCount() == stage_dofs.DofCount()) {
     Stop(Termination::kIllPosed,
@@ -815,6 +856,23 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
     m.Stop(Termination::kNumericalFailure, e.what());
   }
 
+  if (m.summary.penetration_target_missed > 0) {
+    char warning[400];
+    std::snprintf(warning,
+                  sizeof warning,
+                  "contact: the penetration target (%.3g %% of the thickness, %.3g m) was not "
+                  "reached in %d step%s; the deepest, %.3g m (%.2g %% of the thickness) at step "
+                  "%d: %s",
+                  100 * m.options.penetration_tolerance,
+                  m.options.penetration_tolerance * m.model.thickness,
+                  m.summary.penetration_target_missed,
+                  m.summary.penetration_target_missed == 1 ? "" : "s",
+                  m.summary.worst_missed_penetration,
+                  100 * m.summary.worst_missed_penetration / m.model.thickness,
+                  m.summary.worst_missed_step,
+                  m.summary.worst_missed_reason.c_str());
+    m.summary.warnings.push_back(warning);
+  }
   SystemTimers t = m.retired_timers;
   if (m.system) {
     const SystemTimers& now = m.system->timers();

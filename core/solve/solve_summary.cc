@@ -104,11 +104,29 @@ std::string SolveSummary::BriefReport() const {
                 step_cuts,
                 total_s);
   std::string out = line;
+  int limits = 0, switched = 0, followed = 0;
+  for (const auto& e : stability_events) {
+    if (e.kind == StabilityKind::kLimit) ++limits;
+    if (e.kind == StabilityKind::kBifurcation && e.branch == Branch::kStable) ++switched;
+    if (e.kind == StabilityKind::kBifurcation && e.branch == Branch::kFundamental &&
+        e.negative_pivots_after > e.negative_pivots_before)
+      ++followed;
+  }
+  auto count = [&](int n, const char* one, const char* many) {
+    if (n == 0) return;
+    std::snprintf(line, sizeof line, ", %d %s", n, n == 1 ? one : many);
+    out += line;
+  };
+  count(limits, "limit point", "limit points");
+  count(switched, "bifurcation onto a stable branch", "bifurcations onto stable branches");
+  count(followed,
+        "bifurcation followed on the unstable primary path",
+        "bifurcations followed on the unstable primary path");
   if (std::isfinite(bending_valid_to)) {
     std::snprintf(line,
                   sizeof line,
                   ", largest curvature %.3g 1/cm (law valid to %.3g 1/cm)",
-                  max_curvature / 100,
+                  max_law_curvature / 100,
                   bending_valid_to / 100);
     out += line;
   }
@@ -173,12 +191,15 @@ std::string SolveSummary::FullReport() const {
     s << "\n";
   }
   if (std::isfinite(bending_valid_to)) {
-    std::snprintf(row,
-                  sizeof row,
-                  "  bending: largest curvature %.4g 1/cm, the law's valid range to %.4g 1/cm%s\n",
-                  max_curvature / 100,
-                  bending_valid_to / 100,
-                  max_curvature > bending_valid_to ? " (exceeded: the law was extrapolated)" : "");
+    std::snprintf(
+        row,
+        sizeof row,
+        "  bending: largest curvature the laws were evaluated at %.4g 1/cm (largest "
+        "principal %.4g 1/cm), their valid range to %.4g 1/cm%s\n",
+        max_law_curvature / 100,
+        max_curvature / 100,
+        bending_valid_to / 100,
+        max_law_curvature > bending_valid_to ? " (exceeded: the law was extrapolated)" : "");
     s << row;
   }
   for (const auto& warning : warnings) s << "  warning: " << warning << "\n";

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/solve/step_state.h"
 
 namespace drape {
 
@@ -25,39 +26,6 @@ enum class Termination {
 };
 
 const char* ToString(Termination termination);
-
-// What the number of negative pivots changing between two converged steps
-// means: a limit point (λ turns along the path: snap-through, snap-back) or a
-// bifurcation (the count changes while λ keeps its direction).
-enum class StabilityKind { kLimit, kBifurcation };
-// Which way the path went on from a bifurcation.
-enum class Branch {
-  kFundamental,  // on along the primary path (solver.branching: fundamental)
-  kStable,       // switched to a secondary branch with the pivots of before
-  kNone,         // not a bifurcation (a limit point), or no branch was found
-};
-const char* ToString(StabilityKind kind);  // "limit", "bifurcation"
-const char* ToString(Branch branch);       // "fundamental", "stable", "none"
-
-// A change in the number of negative pivots between two converged steps: the
-// path crossed a limit or bifurcation point.
-struct StabilityEvent {
-  int stage = -1;
-  int step = 0;       // the first step after the change (on the branch taken)
-  double lambda = 0;  // where it happened (a located bifurcation: its λ)
-  int negative_pivots_before = 0;
-  int negative_pivots_after = 0;  // on the path the step took (the branch when switched)
-  StabilityKind kind = StabilityKind::kLimit;
-  Branch branch = Branch::kNone;
-  // Bifurcations: the pivots on the primary path just past the point, how
-  // many critical modes, the largest nodal translation of the switch onto the
-  // branch [m], and what locating and switching cost.
-  int negative_pivots_fundamental = 0;
-  int modes = 0;
-  double mode_max_displacement = 0;
-  int switch_iterations = 0;
-  double switch_s = 0;
-};
 
 // One line: what happened, where, and which way the path went on.
 std::string Describe(const StabilityEvent& event);
@@ -96,6 +64,10 @@ struct SolveSummary {
   // against the range the bending laws were measured or fitted over (∞ when
   // every law is linear) [1/m].
   double max_curvature = 0;
+  // The largest curvature the laws were evaluated at (their argument K,
+  // MaxLawCurvature): this, not the principal curvature, is held against
+  // their range [1/m].
+  double max_law_curvature = 0;
   double bending_valid_to = std::numeric_limits<double>::infinity();
 
   // Contact (scenes with obstacles; zero otherwise).
@@ -103,7 +75,13 @@ struct SolveSummary {
   double max_penetration = 0;          // over every converged step [m]
   double max_stabilization_force = 0;  // largest nodal spring force, any step [N]
   int augmentations = 0;               // augmented-Lagrangian passes (each one Newton solve)
-  int branch_switches = 0;             // bifurcations passed onto a secondary branch
+  // Steps whose augmentation stopped short of its penetration target, and
+  // the deepest of them (also a warning).
+  int penetration_target_missed = 0;
+  double worst_missed_penetration = 0;  // [m]
+  int worst_missed_step = 0;
+  std::string worst_missed_reason;
+  int branch_switches = 0;  // bifurcations passed onto a secondary branch
 
   double total_s = 0;
   double assembly_s = 0;

@@ -69,6 +69,21 @@ bool SolverOptions::IsValid(std::string* error) const {
                "divergence_ratio > 1",
                error) &&
          Check(psi >= 0, "psi", psi, "psi >= 0", error) &&
+         Check(penetration_tolerance > 0,
+               "penetration_tolerance",
+               penetration_tolerance,
+               "penetration_tolerance > 0",
+               error) &&
+         Check(max_augmentations >= 0,
+               "max_augmentations",
+               max_augmentations,
+               "max_augmentations >= 0",
+               error) &&
+         Check(max_augmentation_iterations >= 0,
+               "max_augmentation_iterations",
+               max_augmentation_iterations,
+               "max_augmentation_iterations >= 0",
+               error) &&
          Check(threads >= 0, "threads", threads, "threads >= 0", error);
 }
 

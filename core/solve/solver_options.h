@@ -38,6 +38,14 @@ struct SolverOptions {
   // ψ [m]: weight of λ against lengths in the arc-length constraint; 0 uses
   // the part's characteristic length (its diagonal).
   double psi = 0;
+  // Contact with the "auto" penalty: augmented-Lagrangian passes after each
+  // converged step until the deepest node is within this fraction of the
+  // thickness, at most `max_augmentations` passes of at most
+  // `max_augmentation_iterations` Newton iterations each (0: max_iterations).
+  // A step that stops short says so (ContactReport::augmentation_shortfall).
+  double penetration_tolerance = 0.005;
+  int max_augmentations = 8;
+  int max_augmentation_iterations = 0;
   // At a bifurcation: switch to the branch a real part takes (kStable) or
   // follow the primary path (kFundamental, the paper's behaviour).
   Branching branching = Branching::kStable;

@@ -29,6 +29,12 @@ struct ContactReport {
   int nodes = 0;                                    // nodes in contact
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // obstacles on the fabric [N]
   double max_penetration = 0;                       // largest −g [m], ≥ 0
+  // With the "auto" penalty: the penetration the augmented-Lagrangian passes
+  // hold (0: no target, a penalty the user set), the passes this step took,
+  // and why they stopped short of the target ("" when it was met).
+  double penetration_target = 0;  // [m]
+  int augmentation_passes = 0;
+  std::string augmentation_shortfall;
   // The stabilisation springs of a scene held only by contact (zero when off).
   Eigen::Vector3d stabilization_force = Eigen::Vector3d::Zero();  // Σ [N]
   double max_stabilization_force = 0;                             // largest nodal [N]
@@ -46,6 +52,39 @@ enum class Convergence {
 // "tolerance", "round_off", "stalled", "not_converged" (result.json's words).
 const char* ToString(Convergence convergence);
 
+// What the number of negative pivots changing between two converged steps
+// means: a limit point (λ turns along the path: snap-through, snap-back) or a
+// bifurcation (the count changes while λ keeps its direction).
+enum class StabilityKind { kLimit, kBifurcation };
+// Which way the path went on from a bifurcation.
+enum class Branch {
+  kFundamental,  // on along the primary path (solver.branching: fundamental)
+  kStable,       // switched to a secondary branch with the pivots of before
+  kNone,         // not a bifurcation (a limit point), or no branch was found
+};
+const char* ToString(StabilityKind kind);  // "limit", "bifurcation"
+const char* ToString(Branch branch);       // "fundamental", "stable", "none"
+
+// A change in the number of negative pivots between two converged steps: the
+// path crossed a limit or bifurcation point.
+struct StabilityEvent {
+  int stage = -1;
+  int step = 0;       // the first step after the change (on the branch taken)
+  double lambda = 0;  // where it happened (a located bifurcation: its λ)
+  int negative_pivots_before = 0;
+  int negative_pivots_after = 0;  // on the path the step took (the branch when switched)
+  StabilityKind kind = StabilityKind::kLimit;
+  Branch branch = Branch::kNone;
+  // Bifurcations: the pivots on the primary path just past the point, how
+  // many critical modes, the largest nodal translation of the switch onto the
+  // branch [m], and what locating and switching cost.
+  int negative_pivots_fundamental = 0;
+  int modes = 0;
+  double mode_max_displacement = 0;
+  int switch_iterations = 0;
+  double switch_s = 0;
+};
+
 struct StepState {
   int stage = -1;  // index in the scene's stages
   std::string stage_name;
@@ -60,11 +99,15 @@ struct StepState {
   double arc_length = 0;                 // the step's length along the path
   int negative_pivots = 0;               // of the converged tangent
   double max_curvature = 0;              // largest principal |κ| at a Gauss point [1/m]
+  double law_curvature = 0;              // largest argument of the bending laws [1/m]
   std::vector<NamedVector> reactions;    // force each support and gripper exerts [N]
   std::vector<NamedVector> probes;       // probe positions [m]
   std::optional<ContactReport> contact;  // present when the scene has obstacles
   ShellState state;                      // the converged configuration
-  double elapsed_s = 0;                  // since the run started
+  // Set on the step where the path crossed a limit or bifurcation point
+  // (also in SolveSummary::stability_events).
+  std::optional<StabilityEvent> stability_event;
+  double elapsed_s = 0;  // since the run started
 };
 
 enum class StepDecision { kContinue, kStop };

@@ -1,6 +1,8 @@
 // Every shipped scene, run and exported as a user would (the `drape` binary):
-// no number anywhere in what it writes is NaN or infinite — result.json,
-// states.bin, and the CSV, OBJ and VTU exports of every step.
+// it converges on a state a real part could rest in (no negative pivot), or
+// its description and its result say why not; and no number anywhere in
+// what it writes is NaN or infinite — result.json, states.bin, and the CSV,
+// OBJ and VTU exports of every step.
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -92,7 +94,7 @@ int NonFiniteVtu(const fs::path& file, std::string* what) {
 
 class ShippedScene : public ::testing::TestWithParam<fs::path> {};
 
-TEST_P(ShippedScene, EveryNumberItWritesIsFinite) {
+TEST_P(ShippedScene, EndsStableOrSaysWhyAndWritesOnlyFiniteNumbers) {
   const fs::path scene = GetParam();
   const fs::path dir = fs::path(::testing::TempDir()) / ("shipped-" + scene.stem().string());
   fs::remove_all(dir);
@@ -102,6 +104,21 @@ TEST_P(ShippedScene, EveryNumberItWritesIsFinite) {
 
   std::ifstream in(dir / "result.json");
   const nlohmann::json result = nlohmann::json::parse(in);
+  EXPECT_EQ(result["status"], "converged") << result["message"];
+  ASSERT_FALSE(result["steps"].empty());
+  const int pivots = result["steps"].back()["negative_pivots"];
+  if (pivots != 0) {
+    std::ifstream scene_in(scene);
+    const std::string description = nlohmann::json::parse(scene_in).value("description", "");
+    EXPECT_NE(description.find("ends unstable"), std::string::npos)
+        << "the last state has " << pivots
+        << " negative pivots and the description does not say why";
+    bool warned = false;
+    for (const auto& w : result["warnings"])
+      warned |= w.get<std::string>().find("unstable equilibrium") != std::string::npos;
+    EXPECT_TRUE(warned) << "the result does not warn of its " << pivots << " negative pivots";
+  }
+
   std::vector<std::string> nulls;
   CollectNulls(result, "", nulls);
   EXPECT_TRUE(nulls.empty()) << "result.json: " << nulls.size() << " non-finite numbers, first at "

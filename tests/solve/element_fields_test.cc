@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/mechanics/director.h"
 #include "support/strip_scene.h"
@@ -65,6 +66,50 @@ TEST(ElementFields, RolledSheetHasTheCylindersCurvatureAndMoment) {
   const double d = 1e6 * std::pow(5e-4, 3) / 12 / (1 - 0.09);
   const Eigen::VectorXd m = EvaluateField(FieldKind::kBendingMoment, model, state);
   for (int e = 0; e < m.size(); ++e) EXPECT_NEAR(m(e), d * k(e), 1e-3 * d * k(e));
+}
+
+// The bending law is evaluated at K = √(κᵀCκ), C the plane-stress matrix
+// over (1 − ν²): for a cylinder (κ₁₁ = 1/R, κ₂₂ = 0) K = κ/√(1 − ν²), 4.8 %
+// above the principal curvature at ν = 0.3; for a sphere (κ₁₁ = κ₂₂ = 1/R)
+// K = κ √(2/(1 − ν)), 69 % above. The range check must use K.
+TEST(ElementFields, LawCurvatureIsTheArgumentTheLawIsEvaluatedAt) {
+  test::StripSpec spec;
+  spec.width = 0.02;
+  spec.elements = 20;
+  Scene scene = test::CantileverStrip(spec);
+  scene.fabric.mesh.elements = std::array<int, 2>{20, 4};
+  scene.material.membrane = IsotropicMembrane{1e6, 0.3};
+  // A gently stiffening law: M = B K + B K³ / (100 1/m)².
+  const double b = 1e6 * std::pow(5e-4, 3) / 12;
+  scene.material.bending.warp = PolynomialBending{{b, 0.0, b / 1e4}, 200.0};
+  const ShellModel model = BuildShellModel(scene);
+  ASSERT_TRUE(model.section.bending_law);
+  // Rolled onto a cylinder of radius R about the y axis: κ₁₁ = 1/R.
+  const double r = 0.1;
+  ShellState state = model.reference;
+  for (int i = 0; i < model.NodeCount(); ++i) {
+    const double x = model.reference.positions(i, 0), y = model.reference.positions(i, 1);
+    state.positions.row(i) << r * std::sin(x / r), y, r * (1 - std::cos(x / r));
+    state.rotations[i] = RotationFromDirector({-std::sin(x / r), 0, std::cos(x / r)});
+  }
+  const double principal = MaxPrincipalCurvature(model, state);
+  const double law = MaxLawCurvature(model, state);
+  std::printf("cylinder: principal %.5f 1/m, law %.5f 1/m, ratio %.5f (closed form %.5f)\n",
+              principal,
+              law,
+              law / principal,
+              1 / std::sqrt(1 - 0.09));
+  EXPECT_NEAR(principal, 1 / r, 0.01 / r);
+  EXPECT_NEAR(law / principal, 1 / std::sqrt(1 - 0.09), 1e-9);
+  // Equal two-way bending and pure twist, on the law itself (Voigt, 2κ₁₂).
+  const PlateBendingLaw& plate = *model.section.bending_law;
+  EXPECT_NEAR(plate.LawCurvature({1.0, 1.0, 0.0}), std::sqrt(2 / (1 - 0.3)), 1e-12);
+  EXPECT_NEAR(plate.LawCurvature({0.0, 0.0, 2.0}), std::sqrt(2 / (1 + 0.3)), 1e-12);
+  // Warp and weft: each yarn's K_α = |κ e_α|, the larger one checked.
+  Scene woven = scene;
+  woven.material.bending.weft = woven.material.bending.warp;
+  const ShellModel two = BuildShellModel(woven);
+  EXPECT_NEAR(two.section.bending_law->LawCurvature({3.0, 1.0, 2.0 * 4.0}), 5.0, 1e-12);
 }
 
 TEST(ElementFields, NamesAreFoundAndContactPressureIsNotAnElementField) {

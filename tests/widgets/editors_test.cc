@@ -643,6 +643,15 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   panel->targetIterations()->setValue(4);
   emit panel->targetIterations()->editingFinished();
   EXPECT_EQ(doc->scene().solver.target_iterations, 4);
+  // What happens at a bifurcation: an undoable choice, shown back.
+  QComboBox* branching = panel->branching();
+  EXPECT_EQ(branching->currentData().toString().toStdString(), "stable");
+  branching->setCurrentIndex(branching->findData("fundamental"));
+  emit branching->activated(branching->currentIndex());
+  EXPECT_EQ(doc->scene().solver.branching, Branching::kFundamental);
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene().solver.branching, Branching::kStable);
+  EXPECT_EQ(branching->currentData().toString().toStdString(), "stable");
 }
 
 // A run works on the scene it started with: no edit reaches the scene while

@@ -276,6 +276,14 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   solver_form->addRow("tolerance ‖R‖/‖R₀‖", tolerance_);
   solver_form->addRow("target iterations N_p", target_iterations_);
   solver_form->addRow("max steps", max_steps_);
+  branching_ = new QComboBox(solver);
+  branching_->addItem("take the stable branch", "stable");
+  branching_->addItem("follow the primary path", "fundamental");
+  branching_->setToolTip(
+      "At a bifurcation (the tangent turns indefinite while λ goes on): switch to the branch a "
+      "real part takes, or follow the primary path through it (unstable past it; the paper's "
+      "studies)");
+  solver_form->addRow("at bifurcations", branching_);
   layout->addWidget(solver);
   connect(tolerance_, &QuantityField::committed, this, edit("tolerance", [](Scene& s, double v) {
             s.solver.tolerance = v;
@@ -288,6 +296,13 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   connect(max_steps_, &QSpinBox::editingFinished, this, [this, edit] {
     edit("max steps", [](Scene& s, double v) { s.solver.max_steps = static_cast<int>(v); })(
         max_steps_->value(), QString::number(max_steps_->value()));
+  });
+  connect(branching_, &QComboBox::activated, this, [this](int i) {
+    if (refreshing_) return;
+    Scene after = document_->scene();
+    after.solver.branching = i == 0 ? Branching::kStable : Branching::kFundamental;
+    if (after.solver.branching == document_->scene().solver.branching) return;
+    document_->apply(QString("branching %1").arg(branching_->itemData(i).toString()), after);
   });
   connect(preset_, &QComboBox::activated, this, [this](int i) {
     if (refreshing_ || i >= static_cast<int>(std::size(kPresets))) return;
@@ -474,6 +489,7 @@ void PropertyPanel::refresh() {
   tolerance_->setValue(s.solver.tolerance, QString::number(s.solver.tolerance));
   target_iterations_->setValue(s.solver.target_iterations);
   max_steps_->setValue(s.solver.max_steps);
+  branching_->setCurrentIndex(s.solver.branching == Branching::kStable ? 0 : 1);
   refreshing_ = false;
 }
 

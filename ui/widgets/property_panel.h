@@ -69,6 +69,7 @@ class PropertyPanel : public QWidget {
   QuantityField* tolerance() const { return tolerance_; }
   QSpinBox* targetIterations() const { return target_iterations_; }
   QSpinBox* maxSteps() const { return max_steps_; }
+  QComboBox* branching() const { return branching_; }
   QLabel* meshInfo() const { return mesh_info_; }
   QString fabricMessage() const;
   QString materialMessage() const;
@@ -113,6 +114,7 @@ class PropertyPanel : public QWidget {
   QFormLayout* material_form_;
   QLabel* material_message_;
   QComboBox* preset_;
+  QComboBox* branching_;
   QuantityField* tolerance_;
   QSpinBox *target_iterations_, *max_steps_;
   bool refreshing_ = false;

@@ -18,13 +18,19 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   lambda_->setName("λ of the stage");
   iterations_ = new QLineSeries;
   iterations_->setName("Newton iterations");
-  stability_ = new QScatterSeries;
-  stability_->setName("negative pivots changed");
-  stability_->setMarkerSize(9);
-  stability_->setColor(QColor(200, 30, 30));
+  limits_ = new QScatterSeries;
+  limits_->setName("limit point");
+  limits_->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  limits_->setMarkerSize(9);
+  limits_->setColor(QColor(230, 140, 20));
+  bifurcations_ = new QScatterSeries;
+  bifurcations_->setName("bifurcation");
+  bifurcations_->setMarkerSize(10);
+  bifurcations_->setColor(QColor(200, 30, 30));
   chart->addSeries(lambda_);
   chart->addSeries(iterations_);
-  chart->addSeries(stability_);
+  chart->addSeries(limits_);
+  chart->addSeries(bifurcations_);
   steps_axis_ = new QValueAxis;
   steps_axis_->setTitleText("step");
   steps_axis_->setLabelFormat("%d");
@@ -37,8 +43,9 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   chart->addAxis(steps_axis_, Qt::AlignBottom);
   chart->addAxis(lambda_axis_, Qt::AlignLeft);
   chart->addAxis(iterations_axis_, Qt::AlignRight);
-  for (QAbstractSeries* s :
-       {static_cast<QAbstractSeries*>(lambda_), static_cast<QAbstractSeries*>(stability_)}) {
+  for (QAbstractSeries* s : {static_cast<QAbstractSeries*>(lambda_),
+                             static_cast<QAbstractSeries*>(limits_),
+                             static_cast<QAbstractSeries*>(bifurcations_)}) {
     s->attachAxis(steps_axis_);
     s->attachAxis(lambda_axis_);
   }
@@ -53,8 +60,8 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
 void RunPlot::clear() {
   lambda_->clear();
   iterations_->clear();
-  stability_->clear();
-  last_pivots_ = 0;
+  limits_->clear();
+  bifurcations_->clear();
   max_iterations_ = 1;
   steps_axis_->setRange(0, 10);
   iterations_axis_->setRange(0, 10);
@@ -63,8 +70,9 @@ void RunPlot::clear() {
 void RunPlot::add(const StepState& step) {
   lambda_->append(step.step, step.lambda);
   iterations_->append(step.step, step.iterations);
-  if (step.negative_pivots != last_pivots_) stability_->append(step.step, step.lambda);
-  last_pivots_ = step.negative_pivots;
+  if (step.stability_event)
+    (step.stability_event->kind == StabilityKind::kLimit ? limits_ : bifurcations_)
+        ->append(step.step, step.lambda);
   max_iterations_ = std::max(max_iterations_, step.iterations);
   steps_axis_->setRange(0, std::max(10, step.step));
   iterations_axis_->setRange(0, std::max(10, max_iterations_));
@@ -75,7 +83,7 @@ int RunPlot::points() const {
 }
 
 int RunPlot::stabilityMarks() const {
-  return static_cast<int>(stability_->count());
+  return static_cast<int>(limits_->count() + bifurcations_->count());
 }
 
 }  // namespace drape

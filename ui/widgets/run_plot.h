@@ -1,7 +1,8 @@
 // The live plot of a run: the load factor λ of each converged step (per
 // stage, so a new stage starts again from 0), the Newton iterations it took,
-// and where the number of negative pivots changed (a limit or bifurcation
-// point crossed) marked on the λ curve.
+// and the limit and bifurcation points the path crossed, marked on the λ
+// curve (a bifurcation where the run switched branch, or followed the
+// primary path on).
 #pragma once
 
 #include <QChartView>
@@ -23,13 +24,12 @@ class RunPlot : public QChartView {
   void add(const StepState& step);
 
   int points() const;          // steps plotted
-  int stabilityMarks() const;  // negative-pivot changes marked
+  int stabilityMarks() const;  // limit and bifurcation points marked
 
  private:
   QLineSeries *lambda_, *iterations_;
-  QScatterSeries* stability_;
+  QScatterSeries *limits_, *bifurcations_;
   QValueAxis *steps_axis_, *lambda_axis_, *iterations_axis_;
-  int last_pivots_ = 0;
   int max_iterations_ = 1;
 };
 
