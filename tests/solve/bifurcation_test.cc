@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/model/fabric_mesh.h"
+#include "core/model/scene.h"
 #include "core/solve/shell_solver.h"
 #include "support/elastica.h"
 
@@ -200,6 +201,199 @@ TEST(Bifurcation, ThreeByTwentyMeshTakesTheElastica) {
               fine,
               extrapolated);
   EXPECT_NEAR(extrapolated, 1.0, 0.002);
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// A 20 × 20 cm sheet (20 × 20 elements, h = 0.5 mm, E = 5 MPa, ν = 0.3,
+// weightless), its left edge pinned, its right edge gripped and pushed in
+// its own plane by 2 cm. The flat sheet is a wide column with free sides: it
+// buckles between the beam's strain π²h²/(12L²) (ν plays no part: a narrow
+// strip) and the cylindrical plate's π²h²/(12(1 − ν²)L²) (Timoshenko &
+// Gere, Theory of Elastic Stability, 2nd ed., §9.2: the free sides relieve
+// the anticlastic restraint), and past it bends cylindrically, its midline
+// on the pinned elastica (the elastica's shape does not depend on the
+// bending stiffness).
+TEST(Bifurcation, SheetPushedInPlaneBucklesOutOfPlaneOntoAStableBranch) {
+  const double l = 0.2, h = 5e-4, nu = 0.3, push = 0.1;  // push: travel over L
+  Scene scene;
+  scene.name = "sheet pushed in its plane";
+  scene.fabric.outline = RectangleOutline{{l, l}, {0.0, 0.0}};
+  scene.fabric.mesh.elements = std::array<int, 2>{20, 20};
+  scene.material.thickness = h;
+  scene.material.areal_weight = 0.0;
+  scene.material.membrane = IsotropicMembrane{5e6, nu};
+  scene.material.bending.warp = LinearBending{};
+  scene.supports.push_back({"left", Selection{EdgeSelection{Side::kLeft}, {}}, Fixity::kPosition});
+  scene.grippers.push_back(
+      {"right", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kPosition});
+  scene.probes.push_back({"centre", {0.0, 0.0}});
+  Stage stage;
+  stage.name = "push";
+  stage.kind = StageKind::kMove;
+  stage.moves.push_back({"right", LinePath{{-push * l, 0.0, 0.0}}, {}});
+  scene.stages.push_back(stage);
+
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  std::vector<StepState> steps;
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    steps.push_back(s);
+    return StepDecision::kContinue;
+  }});
+  std::printf("%s\n", summary.BriefReport().c_str());
+  ASSERT_TRUE(summary.IsComplete()) << summary.FullReport();
+  ASSERT_FALSE(summary.stability_events.empty());
+  const StabilityEvent& e = summary.stability_events.front();
+  std::printf("  %s\n", Describe(e).c_str());
+  EXPECT_EQ(e.kind, StabilityKind::kBifurcation);
+  EXPECT_EQ(e.branch, Branch::kStable);
+
+  const double beam = kPi * kPi * h * h / (12 * l * l);  // Δ/L at buckling
+  const double plate = beam / (1 - nu * nu);
+  const double critical = e.lambda * push;
+  std::printf("  buckles at Δ/L = %.4g: beam %.4g, plate %.4g\n", critical, beam, plate);
+  EXPECT_GT(critical, beam * 0.99);
+  EXPECT_LT(critical, plate * 1.01);
+
+  int compared = 0;
+  for (const StepState& s : steps) {
+    if (s.step < e.step) continue;
+    EXPECT_EQ(s.negative_pivots, 0) << "step " << s.step;
+    const double travel = s.lambda * push;
+    if (travel < 1e-3) continue;
+    const double exact = test::ClosedFormAtShortening(travel - critical).height;
+    const double fe = std::abs(s.probes.front().value.z()) / l;
+    EXPECT_NEAR(fe, exact, 0.005) << "step " << s.step;
+    ++compared;
+  }
+  EXPECT_GE(compared, 5);
+  EXPECT_GT(std::abs(steps.back().probes.front().value.z()), 0.15 * l);  // well out of plane
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// A shallow sinusoidal arch, w₀ = a sin(πx/L), pinned at both ends (L =
+// 0.2 m, b = 1 cm, h = 0.5 mm, E = 100 MPa, ν = 0; rise a = 10 r, r = h/√12
+// the radius of gyration: 1.44 mm), pressed at its crown by a frictionless
+// rod of radius 5 mm that moves down by 0.6 a.
+//
+// Shallow-arch theory (Fung & Kaplan, "Buckling of low arches or curved
+// beams of small curvature", NACA TN 2840, 1952): an antisymmetric
+// perturbation leaves the thrust N unchanged (its integral against the
+// symmetric shape vanishes) and vanishes at the crown, so it is resisted by
+// EI w'''' + N w'' alone: the symmetric path bifurcates where the thrust
+// reaches the second Euler load N₂ = 4π²EI/L², and on the antisymmetric
+// branch the thrust stays N₂. For a rise of 10 r the bifurcation comes
+// before the symmetric path's limit point (the largest rod force), so under
+// a load the arch would snap there; the rod holds the crown's height, and
+// the antisymmetric branch is stable under it.
+struct ArchPoint {
+  double lambda, thrust, force, left, right;  // H/N₂, rod force [N], quarter-point rises [m]
+  int negative_pivots;
+};
+
+std::vector<ArchPoint> PressArch(Branching branching, SolveSummary* summary) {
+  const double l = 0.2, b = 0.01, h = 5e-4, e = 1e8, rod = 0.005;
+  const double a = 10 * h / std::sqrt(12.0);
+  Scene scene;
+  scene.name = "shallow arch pressed by a rod";
+  scene.fabric.outline = RectangleOutline{{l, b}, {l / 2, 0.0}};
+  scene.fabric.mesh.elements = std::array<int, 2>{80, 2};
+  scene.material.thickness = h;
+  scene.material.areal_weight = 0.0;
+  scene.material.membrane = IsotropicMembrane{e, 0.0};
+  scene.material.bending.warp = LinearBending{};
+  Mesh mesh = MeshFabric(scene.fabric);
+  NodesSelection left, right;
+  for (int i = 0; i < mesh.NodeCount(); ++i) {
+    const double x = mesh.positions(i, 0);
+    if (std::abs(x) < 1e-9) left.nodes.push_back(i);
+    if (std::abs(x - l) < 1e-9) right.nodes.push_back(i);
+    mesh.positions(i, 2) = a * std::sin(kPi * x / l);
+  }
+  scene.supports.push_back({"left", Selection{left, {}}, Fixity::kPosition});
+  scene.supports.push_back({"right", Selection{right, {}}, Fixity::kPosition});
+  // The rod's underside 1 µm above the crown's upper surface.
+  scene.obstacles.push_back(
+      {"rod", CylinderShape{{l / 2, 0.0, a + h / 2 + rod + 1e-6}, {0, 1, 0}, rod, {}}});
+  scene.probes.push_back({"left", {l / 4, 0.0}});
+  scene.probes.push_back({"right", {3 * l / 4, 0.0}});
+  Stage press;
+  press.name = "press";
+  press.kind = StageKind::kMove;
+  press.moves.push_back({"", LinePath{{0, 0, -0.6 * a}}, "rod"});
+  scene.stages.push_back(press);
+  scene.solver.tolerance = 1e-8;
+  scene.solver.branching = branching;
+
+  const double n2 = 4 * kPi * kPi * e * b * h * h * h / 12 / (l * l);
+  ShellSolver solver(scene, BuildShellModel(scene, mesh), SolverOptions::FromScene(scene.solver));
+  std::vector<ArchPoint> path;
+  *summary = solver.Solve({[&](const StepState& s) {
+    ArchPoint p{s.lambda, 0, -s.contact->force.z(), 0, 0, s.negative_pivots};
+    for (const auto& r : s.reactions)
+      if (r.name == "left") p.thrust = r.value.x() / n2;
+    p.left = s.probes[0].value.z();
+    p.right = s.probes[1].value.z();
+    path.push_back(p);
+    return StepDecision::kContinue;
+  }});
+  return path;
+}
+
+TEST(Bifurcation, ShallowArchTakesTheAntisymmetricBranchAtTheSecondEulerThrust) {
+  SolveSummary primary_summary, summary;
+  const std::vector<ArchPoint> primary = PressArch(Branching::kFundamental, &primary_summary);
+  const std::vector<ArchPoint> path = PressArch(Branching::kStable, &summary);
+  ASSERT_TRUE(primary_summary.IsComplete()) << primary_summary.FullReport();
+  ASSERT_TRUE(summary.IsComplete()) << summary.FullReport();
+  double limit_force = 0;  // the symmetric path's largest rod force
+  for (const ArchPoint& p : primary) limit_force = std::max(limit_force, p.force);
+
+  std::printf("%5s %9s %9s %10s %10s %10s %s\n",
+              "step",
+              "lambda",
+              "H/N2",
+              "force",
+              "w(L/4)",
+              "w(3L/4)",
+              "negpiv");
+  for (size_t i = 0; i < path.size(); ++i)
+    std::printf("%5zu %9.5f %9.5f %10.4e %10.4e %10.4e %d\n",
+                i + 1,
+                path[i].lambda,
+                path[i].thrust,
+                path[i].force,
+                path[i].left,
+                path[i].right,
+                path[i].negative_pivots);
+  ASSERT_EQ(summary.stability_events.size(), 1u) << summary.FullReport();
+  const StabilityEvent& e = summary.stability_events.front();
+  std::printf("%s\n", Describe(e).c_str());
+  EXPECT_EQ(e.kind, StabilityKind::kBifurcation);
+  EXPECT_EQ(e.branch, Branch::kStable);
+  ASSERT_GE(e.step, 2);
+  // The located point (the step before the switch) carries the thrust N₂.
+  const ArchPoint& at = path[e.step - 2];
+  EXPECT_NEAR(at.thrust, 1.0, 0.01);
+  EXPECT_NEAR(at.left, at.right, 1e-9);  // still symmetric there
+  EXPECT_LT(at.force, 0.9 * limit_force) << "the bifurcation comes before the limit point";
+  // On the branch: the thrust stays N₂, the arch leans over, nothing unstable.
+  for (size_t i = e.step - 1; i < path.size(); ++i) {
+    EXPECT_NEAR(path[i].thrust, 1.0, 0.01) << "step " << i + 1;
+    EXPECT_EQ(path[i].negative_pivots, 0) << "step " << i + 1;
+  }
+  const double a = 10 * 5e-4 / std::sqrt(12.0);
+  EXPECT_GT(std::abs(path.back().left - path.back().right), 0.5 * a);
+  EXPECT_LT(path.back().force, at.force);  // the rod force falls along the branch
 }
 
 }  // namespace
