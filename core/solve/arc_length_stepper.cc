@@ -21,6 +21,21 @@ Eigen::VectorXd ArcLengthStepper::Translations(const Eigen::VectorXd& free) cons
   return free.cwiseProduct(translation_mask_);
 }
 
+double ArcLengthStepper::Correct(const Eigen::VectorXd& correction,
+                                 double delta,
+                                 ShellState& state,
+                                 double& lambda,
+                                 Eigen::VectorXd& translations,
+                                 double& lambda_increment) const {
+  const Eigen::VectorXd full = system_.dofs().Expand(correction);
+  translations += Translations(correction);
+  lambda_increment += delta;
+  lambda += delta;
+  ApplyIncrement(full, state);
+  loading_.Place(lambda, state);
+  return MaxTranslation(full);
+}
+
 Eigen::VectorXd ArcLengthStepper::AssembleWithRate(const ShellState& state, double lambda) {
   const Eigen::VectorXd velocity = loading_.Velocity(lambda, state);
   system_.Assemble(state, /*with_tangent=*/true, loading_.MovesGrippers() ? &velocity : nullptr);
@@ -109,37 +124,29 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   double last_correction = INFINITY;
 
   for (int it = 0;; ++it) {
-    if (cancel) cancel->WaitWhilePaused();  // a pause holds the run here
-    if (cancel && cancel->IsCancelled()) {
-      out.status = NewtonOutcome::Status::kCancelled;
-      out.reason = "cancelled";
-      return out;
-    }
-    if (!IsFinite(state)) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the state is not finite";
+    if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done) {
+      out.status = v.status;
+      out.reason = v.reason;
       return out;
     }
     f0 = AssembleWithRate(state, lambda);
     const Eigen::VectorXd f_ext = loading_.External(lambda, state);
     const Eigen::VectorXd r = system_.Residual(f_ext);
-    const double norm = r.norm();
-    const double level = newton_.relative_to_force_level ? system_.ForceLevel(f_ext) : reference;
-    const double ratio = level > 0 ? norm / level : norm;
-    out.residuals.push_back(ratio);
-    if (!std::isfinite(norm) || ratio > newton_.divergence_ratio) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the residual grew by a factor " + Number(ratio);
+    const IterationVerdict v =
+        JudgeIteration(newton_,
+                       r.norm(),
+                       newton_.relative_to_force_level ? system_.ForceLevel(f_ext) : reference,
+                       system_.RoundOffLevel(state),
+                       last_correction,
+                       it,
+                       out.residuals,
+                       out.convergence);
+    if (v.done && v.status != NewtonOutcome::Status::kConverged) {
+      out.status = v.status;
+      out.reason = v.reason;
       return out;
     }
-    out.convergence =
-        newton_.Judge(out.residuals, norm, system_.RoundOffLevel(state), last_correction);
-    if (out.convergence == Convergence::kStalled) {
-      out.status = NewtonOutcome::Status::kStalled;
-      out.reason = StallReason(ratio, newton_.tolerance);
-      return out;
-    }
-    if (out.convergence != Convergence::kNotYet) {
+    if (v.done) {
       if (lambda > target + 1e-12) {
         // Converged past the stage's end: redo the step landing on it.
         state = start;
@@ -159,12 +166,6 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
       out.negative_pivots = system_.Factorize().negative_pivots;  // at the converged state
       out.lambda = lambda;
       out.direction = {a, b};
-      return out;
-    }
-    if (it == newton_.max_iterations) {
-      out.status = NewtonOutcome::Status::kIterationLimit;
-      out.reason = "no convergence in " + std::to_string(it) +
-                   " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")";
       return out;
     }
     // Bordered update: two solves with one factorisation.
@@ -189,21 +190,10 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
       auto forward = [&](double x) { return a.dot(p + x * t_i) + psi2 * b * (b + x); };
       delta = forward(r1) >= forward(r2) ? r1 : r2;
     }
-    const Eigen::VectorXd correction = u_h + delta * u_i;
-    const Eigen::VectorXd full = dofs.Expand(correction);
-    a += Translations(correction);
-    b += delta;
-    lambda += delta;
-    ApplyIncrement(full, state);
-    loading_.Place(lambda, state);
-    last_correction = MaxTranslation(full);
+    last_correction = Correct(u_h + delta * u_i, delta, state, lambda, a, b);
     ++out.iterations;
   }
 }
-
-}  // namespace drape
-
-namespace drape {
 
 int ArcLengthStepper::LambdaDirection(const ShellState& state,
                                       double lambda,
@@ -245,37 +235,28 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
   judge.relative_to_force_level = true;
   double last_correction = INFINITY;
   for (int it = 0;; ++it) {
-    if (cancel) cancel->WaitWhilePaused();
-    if (cancel && cancel->IsCancelled()) {
-      out.status = NewtonOutcome::Status::kCancelled;
-      out.reason = "cancelled";
-      return out;
-    }
-    if (!IsFinite(state)) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the state is not finite";
+    if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done) {
+      out.status = v.status;
+      out.reason = v.reason;
       return out;
     }
     const Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
     const Eigen::VectorXd f_ext = loading_.External(lambda, state);
     const Eigen::VectorXd r = system_.Residual(f_ext);
-    const double norm = r.norm();
-    const double level = system_.ForceLevel(f_ext);
-    const double ratio = level > 0 ? norm / level : norm;
-    out.residuals.push_back(ratio);
-    if (!std::isfinite(norm) || ratio > judge.divergence_ratio) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the residual grew by a factor " + Number(ratio);
+    const IterationVerdict v = JudgeIteration(judge,
+                                              r.norm(),
+                                              system_.ForceLevel(f_ext),
+                                              system_.RoundOffLevel(state),
+                                              last_correction,
+                                              it,
+                                              out.residuals,
+                                              out.convergence);
+    if (v.done && v.status != NewtonOutcome::Status::kConverged) {
+      out.status = v.status;
+      out.reason = v.reason;
       return out;
     }
-    out.convergence =
-        judge.Judge(out.residuals, norm, system_.RoundOffLevel(state), last_correction);
-    if (out.convergence == Convergence::kStalled) {
-      out.status = NewtonOutcome::Status::kStalled;
-      out.reason = StallReason(ratio, judge.tolerance);
-      return out;
-    }
-    if (out.convergence != Convergence::kNotYet) {
+    if (v.done) {
       if (std::abs(n.dot(q) - amplitude) > 0.5 * std::abs(amplitude)) {
         out.status = NewtonOutcome::Status::kDiverged;
         out.reason = "the corrector went back towards the primary path";
@@ -289,12 +270,6 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
       out.arc_length = std::sqrt(a.squaredNorm() + (psi_ * psi_ + speed * speed) * b * b);
       return out;
     }
-    if (it == judge.max_iterations) {
-      out.status = NewtonOutcome::Status::kIterationLimit;
-      out.reason = "no convergence on the branch in " + std::to_string(it) +
-                   " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")";
-      return out;
-    }
     system_.Factorize();
     const Eigen::VectorXd u_h = system_.Solve(-r);
     const Eigen::VectorXd u_i = system_.Solve(f0);
@@ -304,14 +279,8 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
     const double miss = amplitude - n.dot(q + u_h);
     const double delta = std::abs(along) > 1e-12 * n.norm() * u_i.norm() ? miss / along : 0.0;
     const Eigen::VectorXd correction = u_h + delta * u_i;
-    const Eigen::VectorXd full = dofs.Expand(correction);
     q += correction;
-    a += Translations(correction);
-    b += delta;
-    lambda += delta;
-    ApplyIncrement(full, state);
-    loading_.Place(lambda, state);
-    last_correction = MaxTranslation(full);
+    last_correction = Correct(correction, delta, state, lambda, a, b);
     ++out.iterations;
   }
 }

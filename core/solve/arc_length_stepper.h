@@ -94,6 +94,14 @@ class ArcLengthStepper {
   // Assembles at (state, λ); returns F₀ over the free DOFs.
   Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);
   Eigen::VectorXd Translations(const Eigen::VectorXd& free) const;
+  // Applies a corrector's (Δq, δλ): the state and its prescribed motion move
+  // on, the step's accumulated translations and Δλ grow. Returns max|Δu|.
+  double Correct(const Eigen::VectorXd& correction,
+                 double delta,
+                 ShellState& state,
+                 double& lambda,
+                 Eigen::VectorXd& translations,
+                 double& lambda_increment) const;
 
   EquilibriumSystem& system_;
   const StageLoading& loading_;

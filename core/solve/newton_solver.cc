@@ -32,6 +32,45 @@ std::string StallReason(double ratio, double tolerance) {
          "round-off floor";
 }
 
+IterationVerdict CheckBeforeAssembly(const ShellState& state, const CancellationToken* cancel) {
+  IterationVerdict v;
+  if (cancel) cancel->WaitWhilePaused();  // a pause holds the run here
+  if (cancel && cancel->IsCancelled()) {
+    v = {true, NewtonOutcome::Status::kCancelled, "cancelled"};
+  } else if (!IsFinite(state)) {
+    v = {true, NewtonOutcome::Status::kDiverged, "the state is not finite"};
+  }
+  return v;
+}
+
+IterationVerdict JudgeIteration(const NewtonSettings& settings,
+                                double norm,
+                                double reference,
+                                double round_off,
+                                double last_correction,
+                                int corrections,
+                                std::vector<double>& ratios,
+                                Convergence& convergence) {
+  const double ratio = reference > 0 ? norm / reference : norm;
+  ratios.push_back(ratio);
+  if (!std::isfinite(norm))
+    return {true, NewtonOutcome::Status::kDiverged, "the residual is not finite"};
+  convergence = settings.Judge(ratios, norm, round_off, last_correction);
+  if (convergence == Convergence::kTolerance || convergence == Convergence::kRoundOff)
+    return {true};
+  if (convergence == Convergence::kStalled)
+    return {true, NewtonOutcome::Status::kStalled, StallReason(ratio, settings.tolerance)};
+  if (ratio > settings.divergence_ratio)
+    return {
+        true, NewtonOutcome::Status::kDiverged, "the residual grew by a factor " + Number(ratio)};
+  if (corrections >= settings.max_iterations)
+    return {true,
+            NewtonOutcome::Status::kIterationLimit,
+            "no convergence in " + std::to_string(corrections) +
+                " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")"};
+  return {};
+}
+
 NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
                                const ExternalForce& external,
                                const NewtonSettings& settings,
@@ -41,55 +80,34 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
   double r0 = 0;
   double last_correction = INFINITY;
   for (int it = 0;; ++it) {
-    if (cancel) cancel->WaitWhilePaused();  // a pause holds the run here
-    if (cancel && cancel->IsCancelled()) {
-      out.status = NewtonOutcome::Status::kCancelled;
-      out.reason = "cancelled";
-      return out;
-    }
-    if (!IsFinite(state)) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the state is not finite";
+    if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done) {
+      out.status = v.status;
+      out.reason = v.reason;
       return out;
     }
     system.Assemble(state, /*with_tangent=*/true);
     const Eigen::VectorXd f_ext = external(state);
     const Eigen::VectorXd r = system.Residual(f_ext);
     const double norm = r.norm();
-    if (!std::isfinite(norm)) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the residual is not finite";
-      return out;
-    }
     // A predictor may start far from or close to equilibrium; the test stays
     // relative to the load the step added, not to where the predictor landed.
     if (it == 0) r0 = settings.residual_reference > 0 ? settings.residual_reference : norm;
     const double reference = settings.relative_to_force_level ? system.ForceLevel(f_ext) : r0;
-    const double ratio = reference > 0 ? norm / reference : 0.0;
-    out.residuals.push_back(ratio);
-    out.convergence =
-        settings.Judge(out.residuals, norm, system.RoundOffLevel(state), last_correction);
-    if (out.convergence == Convergence::kTolerance || out.convergence == Convergence::kRoundOff) {
-      out.status = NewtonOutcome::Status::kConverged;
+    const IterationVerdict v = JudgeIteration(settings,
+                                              norm,
+                                              reference,
+                                              system.RoundOffLevel(state),
+                                              last_correction,
+                                              it,
+                                              out.residuals,
+                                              out.convergence);
+    if (v.done) {
+      out.status = v.status;
+      out.reason = v.reason;
       // The stability indicator belongs to the converged state, whose tangent
       // was just assembled.
-      out.negative_pivots = system.Factorize().negative_pivots;
-      return out;
-    }
-    if (out.convergence == Convergence::kStalled) {
-      out.status = NewtonOutcome::Status::kStalled;
-      out.reason = StallReason(ratio, settings.tolerance);
-      return out;
-    }
-    if (ratio > settings.divergence_ratio) {
-      out.status = NewtonOutcome::Status::kDiverged;
-      out.reason = "the residual grew by a factor " + Number(ratio);
-      return out;
-    }
-    if (it == settings.max_iterations) {
-      out.status = NewtonOutcome::Status::kIterationLimit;
-      out.reason = "no convergence in " + std::to_string(it) +
-                   " iterations (‖R‖/‖R₀‖ = " + Number(ratio) + ")";
+      if (v.status == NewtonOutcome::Status::kConverged)
+        out.negative_pivots = system.Factorize().negative_pivots;
       return out;
     }
     system.Factorize();

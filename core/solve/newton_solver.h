@@ -68,6 +68,32 @@ struct NewtonOutcome {
   std::string reason;       // why it did not converge
 };
 
+// What a corrector makes of one iteration: Newton at a fixed λ, the
+// arc-length corrector and the step onto a branch judge alike.
+struct IterationVerdict {
+  bool done = false;  // stop iterating: converged, or failed (`status` says which)
+  NewtonOutcome::Status status = NewtonOutcome::Status::kConverged;
+  std::string reason;  // why it failed
+};
+
+// Before an assembly: a pause holds the run here; a cancellation or a
+// non-finite state ends the iteration.
+IterationVerdict CheckBeforeAssembly(const ShellState& state, const CancellationToken* cancel);
+
+// After an assembly: appends ‖R‖/`reference` to `ratios` (`reference` 0:
+// the ratio is ‖R‖ itself), sets `convergence`, and says whether to stop —
+// converged (tolerance or round-off floor), stalled, diverged (a non-finite
+// residual or one above the divergence ratio) or out of iterations
+// (`corrections` applied so far, against max_iterations).
+IterationVerdict JudgeIteration(const NewtonSettings& settings,
+                                double norm,
+                                double reference,
+                                double round_off,
+                                double last_correction,
+                                int corrections,
+                                std::vector<double>& ratios,
+                                Convergence& convergence);
+
 // A ratio or tolerance for a message: "%.3g".
 std::string Number(double value);
 
