@@ -57,7 +57,7 @@ IterationVerdict JudgeIteration(const NewtonSettings& settings,
     return {true, NewtonOutcome::Status::kDiverged, "the residual is not finite"};
   convergence = settings.Judge(ratios, norm, round_off, last_correction);
   if (convergence == Convergence::kTolerance || convergence == Convergence::kRoundOff)
-    return {true};
+    return {true, NewtonOutcome::Status::kConverged, ""};
   if (convergence == Convergence::kStalled)
     return {true, NewtonOutcome::Status::kStalled, StallReason(ratio, settings.tolerance)};
   if (ratio > settings.divergence_ratio)
