@@ -20,6 +20,19 @@ EquilibriumSystem::EquilibriumSystem(const ShellModel& model,
     : dofs_(dofs), contact_(contact), assembler_(model, dofs), tangent_(assembler_.Pattern()) {
   internal_.setZero(model.DofCount());
   if (dofs.FreeCount() > 0) cholesky_.Analyze(tangent_);
+  // Per stored entry (row r, column c of the upper triangle), how many of
+  // its two DOFs (one on the diagonal) are translations and how many
+  // rotations: the weights of X² and 1 in RoundOffLevel.
+  std::vector<bool> rotation(dofs.FreeCount(), false);
+  for (int d = 0; d < dofs.DofCount(); ++d)
+    if (const int f = dofs.Free(d); f >= 0) rotation[f] = d % kDofsPerNode >= 3;
+  round_off_weights_.setZero(tangent_.nonZeros(), 2);
+  for (int c = 0; c < tangent_.outerSize(); ++c)
+    for (int k = tangent_.outerIndexPtr()[c]; k < tangent_.outerIndexPtr()[c + 1]; ++k) {
+      const int r = tangent_.innerIndexPtr()[k];
+      round_off_weights_(k, rotation[c] ? 1 : 0) += 1;
+      if (r != c) round_off_weights_(k, rotation[r] ? 1 : 0) += 1;
+    }
   if (!contact_) return;
   // Every node's translational block is in the element pattern already.
   const int* outer = tangent_.outerIndexPtr();
@@ -96,25 +109,16 @@ double EquilibriumSystem::ForceLevel(const Eigen::VectorXd& external) const {
 }
 
 double EquilibriumSystem::RoundOffLevel(const ShellState& state) const {
+  // Σ_ij K_ij² δ_j² over the symmetric matrix from its upper triangle, with
+  // δ = ε·X on translations and ε on rotations: each stored entry adds
+  // K²(δ_r² + δ_c²) (once on the diagonal), i.e. ε²K²(X² a + b) with the
+  // pattern's own counts a, b (round_off_weights_).
   const double eps = std::numeric_limits<double>::epsilon();
   const double coordinate = state.positions.cwiseAbs().maxCoeff();
-  Eigen::VectorXd delta2(dofs_.FreeCount());
-  for (int d = 0; d < dofs_.DofCount(); ++d)
-    if (const int f = dofs_.Free(d); f >= 0) {
-      const double delta = d % kDofsPerNode < 3 ? eps * coordinate : eps;
-      delta2(f) = delta * delta;
-    }
-  const int* outer = tangent_.outerIndexPtr();
-  const int* inner = tangent_.innerIndexPtr();
-  const double* values = tangent_.valuePtr();
-  double sum = 0;
-  for (int c = 0; c < tangent_.outerSize(); ++c)
-    for (int k = outer[c]; k < outer[c + 1]; ++k) {
-      const double v2 = values[k] * values[k];
-      sum += v2 * delta2(c);
-      if (inner[k] != c) sum += v2 * delta2(inner[k]);
-    }
-  return std::sqrt(sum);
+  const Eigen::Map<const Eigen::ArrayXd> values(tangent_.valuePtr(), tangent_.nonZeros());
+  const double translational = (values.square() * round_off_weights_.col(0)).sum();
+  const double rotational = (values.square() * round_off_weights_.col(1)).sum();
+  return eps * std::sqrt(coordinate * coordinate * translational + rotational);
 }
 
 Eigen::VectorXd EquilibriumSystem::TangentDiagonal() const {

@@ -3,6 +3,7 @@
 // steps. Owns the assembly buffers and the factorisation (analysed once).
 #pragma once
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include "core/solve/dof_map.h"
@@ -87,6 +88,8 @@ class EquilibriumSystem {
   FactorizationInfo factorized_info_;
   bool factorized_valid_ = false;
   SystemTimers timers_;
+  // Per tangent entry: its translational and rotational DOF counts.
+  Eigen::ArrayX2d round_off_weights_;
 };
 
 }  // namespace drape

@@ -319,7 +319,8 @@ bool ShellSolver::Impl::Emit(int stage_index,
   step.arc_length = result.arc_length;
   step.negative_pivots = result.negative_pivots;
   step.max_curvature = MaxPrincipalCurvature(model, state);
-  step.law_curvature = MaxLawCurvature(model, state);
+  step.law_curvature =
+      model.section.bending_law ? MaxLawCurvature(model, state) : step.max_curvature;
   summary.max_curvature = std::max(summary.max_curvature, step.max_curvature);
   summary.max_law_curvature = std::max(summary.max_law_curvature, step.law_curvature);
   // What each support and gripper exerts on the fabric: F_int − F_ext at its
