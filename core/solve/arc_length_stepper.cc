@@ -195,6 +195,14 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   }
 }
 
+double ArcLengthStepper::Length(const PathDirection& secant,
+                                double lambda,
+                                const ShellState& state) const {
+  const double speed = loading_.PrescribedSpeed(lambda, state);
+  return std::sqrt(secant.translation.squaredNorm() +
+                   (psi_ * psi_ + speed * speed) * secant.lambda * secant.lambda);
+}
+
 int ArcLengthStepper::LambdaDirection(const ShellState& state,
                                       double lambda,
                                       const PathDirection& secant) {
@@ -266,8 +274,7 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
       out.negative_pivots = system_.Factorize().negative_pivots;
       out.lambda = lambda;
       out.direction = {a, b};
-      const double speed = loading_.PrescribedSpeed(lambda, state);
-      out.arc_length = std::sqrt(a.squaredNorm() + (psi_ * psi_ + speed * speed) * b * b);
+      out.arc_length = Length(out.direction, lambda, state);
       return out;
     }
     system_.Factorize();

@@ -84,6 +84,10 @@ class ArcLengthStepper {
                              double rotation_length,
                              const CancellationToken* cancel);
 
+  // The length of a step's secant in the arc-length metric, √(‖Δu‖² +
+  // ψ_e²Δλ²), ψ_e at the state it ended at.
+  double Length(const PathDirection& secant, double lambda, const ShellState& state) const;
+
   // Which way λ goes along the path at a converged (state, λ), forward being
   // the side of `secant` (the step that arrived there): +1 rising, −1
   // falling. From the tangent (K⁻¹F₀, 1); a flip between two states means a

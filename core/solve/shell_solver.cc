@@ -144,6 +144,15 @@ struct ShellSolver::Impl {
   // What a change of the count at a converged step is: a limit point when
   // λ's direction along the path flipped, else a bifurcation.
   StabilityEvent Classify(ArcLengthStepper& stepper, const ContinuationStep& step);
+  // Whether the run switches branch at this event: a bifurcation crossed
+  // from a stable state under `stable` branching. Between a limit point and
+  // the next one the path is unstable already (a real part snaps through
+  // it), and the branches of a bifurcation there are no more observable than
+  // the primary path, which leads on to the stable states beyond.
+  bool SwitchesAt(const StabilityEvent& event, const ContinuationStep& step) const {
+    return event.kind == StabilityKind::kBifurcation && last_negative_pivots == 0 &&
+           step.negative_pivots > 0 && options.branching == Branching::kStable;
+  }
   // At a bifurcation under `stable` branching: locates it, switches to a
   // secondary branch and emits the points reached (the bifurcation, the
   // first point on the branch); the stepping goes on from there. False when
@@ -524,11 +533,37 @@ bool ShellSolver::Impl::RunLoadControl(int index,
       continue;
     }
     cuts_in_a_row = 0;
+    std::optional<StabilityEvent> event;
+    if (step.negative_pivots != last_negative_pivots) event = Classify(stepper, step);
+    if (event && SwitchesAt(*event, step)) {
+      // Located and switched with arc-length steps (the step's own length in
+      // their metric); load control goes on from the branch.
+      step.arc_length = stepper.Length(step.direction, lambda + increment, state);
+      PathPoint branch;
+      if (!PassBifurcation(index,
+                           loading,
+                           stepper,
+                           PathPoint{saved, lambda, {}},
+                           nullptr,
+                           PathPoint{state, lambda + increment, step},
+                           *event,
+                           stage,
+                           branch))
+        return false;
+      // Near the bifurcation λ grows with the square of the amplitude: a
+      // step three times the switch's rise in λ doubles the amplitude, where
+      // a full-size step's tangent predictor would shoot far along the
+      // nearly free mode. Acceleration grows it back.
+      increment = std::max(3 * (branch.lambda - summary.stability_events.back().lambda),
+                           1e-4 * spec.initial_increment);
+      lambda = branch.lambda;
+      continue;
+    }
     lambda += increment;
     ++stage.steps;
     stage.final_lambda = lambda;
     step.arc_length = increment;
-    if (!Emit(index, stage.steps, lambda, loading, step)) return false;
+    if (!Emit(index, stage.steps, lambda, loading, step, event ? &*event : nullptr)) return false;
     if (options.acceleration) {
       const double gamma =
           static_cast<double>(options.target_iterations) / std::max(1, step.iterations);
@@ -585,12 +620,7 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
     cuts_in_a_row = 0;
     std::optional<StabilityEvent> event;
     if (step.negative_pivots != last_negative_pivots) event = Classify(stepper, step);
-    // Only from a stable state: between a limit point and the next one the
-    // path is unstable already (a real part snaps through it), and the
-    // branches of a bifurcation there are no more observable than the
-    // primary path, which leads on to the stable states beyond.
-    if (event && event->kind == StabilityKind::kBifurcation && last_negative_pivots == 0 &&
-        step.negative_pivots > 0 && options.branching == Branching::kStable) {
+    if (event && SwitchesAt(*event, step)) {
       PathPoint branch;
       if (!PassBifurcation(index,
                            loading,
@@ -633,7 +663,7 @@ StabilityEvent ShellSolver::Impl::Classify(ArcLengthStepper& stepper,
   const int direction = stepper.LambdaDirection(state, step.lambda, step.direction);
   e.kind = direction != lambda_direction ? StabilityKind::kLimit : StabilityKind::kBifurcation;
   e.branch = e.kind == StabilityKind::kLimit ? Branch::kNone : Branch::kFundamental;
-  e.lambda = step.landed ? 1.0 : step.lambda;
+  e.lambda = step.lambda;
   lambda_direction = direction;
   return e;
 }

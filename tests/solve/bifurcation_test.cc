@@ -42,15 +42,17 @@ struct PushedStrip {
   double angle_deg = 0;  // the strip's axis, turned in the xy plane
   int nx = 80, ny = 1;
   double shortening = 0.6;  // the gripper's travel over L
+  StepControl control = StepControl::kArcLength;
   std::string Label() const {
-    char s[96];
+    char s[128];
     std::snprintf(s,
                   sizeof s,
-                  "%s strip %dx%d at %g deg",
+                  "%s strip %dx%d at %g deg%s",
                   clamped ? "clamped-clamped" : "pinned-pinned",
                   nx,
                   ny,
-                  angle_deg);
+                  angle_deg,
+                  control == StepControl::kLoad ? ", load control" : "");
     return s;
   }
 };
@@ -92,6 +94,7 @@ Run Push(const PushedStrip& p) {
   push.name = "push";
   push.kind = StageKind::kMove;
   push.initial_increment = 0.01;  // a first step far past Euler's load
+  push.control = p.control;
   const Eigen::Vector3d by = -p.shortening * kLength * axis;
   push.moves.push_back({"end", LinePath{{by.x(), by.y(), by.z()}}, {}});
   scene.stages.push_back(push);
@@ -177,6 +180,12 @@ TEST(Bifurcation, PerfectPinnedStripTakesTheElastica) {
 
 TEST(Bifurcation, PerfectClampedStripTakesTheElastica) {
   ExpectElastica({.clamped = true});
+}
+
+// Under load (displacement) control the bifurcation is located and switched
+// the same way; the steps then go on under load control from the branch.
+TEST(Bifurcation, StripUnderLoadControlTakesTheElastica) {
+  ExpectElastica({.clamped = true, .control = StepControl::kLoad});
 }
 
 TEST(Bifurcation, StripAtThirtyDegreesInThePlaneTakesTheElastica) {
