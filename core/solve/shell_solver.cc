@@ -562,6 +562,7 @@ bool ShellSolver::Impl::RunLoadControl(int index,
     lambda += increment;
     ++stage.steps;
     stage.final_lambda = lambda;
+    stage_path_length += stepper.Length(step.direction, lambda, state);
     step.arc_length = increment;
     if (!Emit(index, stage.steps, lambda, loading, step, event ? &*event : nullptr)) return false;
     if (options.acceleration) {
@@ -695,7 +696,16 @@ bool ShellSolver::Impl::PassBifurcation(int index,
     return false;
   }
   if (!sw.switched) {
+    // Keep the last stable point the bisection found: the part's state just
+    // before it would snap.
     state = start.state;
+    if (sw.bifurcation) {
+      state = sw.bifurcation->state;
+      ++stage.steps;
+      stage.final_lambda = sw.bifurcation->lambda;
+      if (!Emit(index, stage.steps, sw.bifurcation->lambda, loading, sw.bifurcation->step))
+        return false;
+    }
     char where[160];
     std::snprintf(where,
                   sizeof where,

@@ -523,6 +523,60 @@ TEST(RunCliFailure, TooFewIterationsFailsWithAPartialResult) {
   EXPECT_EQ(states.steps.size(), result["steps"].size());
 }
 
+// A strip balanced on a frictionless rod is a chain over a pulley: once its
+// weight outgrows the stabilisation springs, its symmetric hang bifurcates
+// and every branch from there slides off (the part would snap). Under
+// `stable` branching that is a clear failure with every step kept, the last
+// one the stable state just before the bifurcation; under `fundamental` the
+// run converges on the primary path and warns that it ends unstable.
+TEST(RunCliFailure, ABifurcationWithNoStableBranchFailsAndKeepsItsSteps) {
+  TempDir dir("no-stable-branch");
+  json doc = {
+      {"drape_scene", 1},
+      {"name", "strip balanced on a frictionless rod"},
+      {"fabric",
+       {{"outline", {{"rectangle", {{"size", {"40 cm", "1 cm"}}, {"center", {0, 0}}}}}},
+        {"mesh", {{"elements", {80, 1}}}}}},
+      {"material",
+       {{"thickness", "0.5 mm"},
+        {"areal_weight", 2.0},
+        {"youngs_modulus", "2 MPa"},
+        {"poisson_ratio", 0.0}}},
+      {"obstacles",
+       {{{"name", "rod"},
+         {"cylinder", {{"point", {0, 0, "-2.025 cm"}}, {"axis", {0, 1, 0}}, {"radius", "2 cm"}}}}}},
+      {"contact", {{"penalty", "auto"}, {"friction", 0.0}}},
+      {"stages", {{{"name", "SW"}, {"kind", "gravity"}, {"initial_increment", 0.01}}}}};
+  const fs::path scene = WriteJson(doc, dir / "scene.json");
+  const CommandResult r = RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const json result = ReadJson(dir / "out" / "result.json");
+  EXPECT_EQ(result["status"], "failed");
+  const std::string message = result["message"];
+  EXPECT_NE(message.find("bifurcates"), std::string::npos) << message;
+  EXPECT_NE(message.find("no stable branch"), std::string::npos) << message;
+  ASSERT_GE(result["steps"].size(), 1u);
+  EXPECT_EQ(result["steps"].back()["negative_pivots"], 0);
+  EXPECT_LT(result["steps"].back()["lambda"].get<double>(), 0.01);
+  const StateFile states = ReadStateFile(dir / "out" / "states.bin");
+  EXPECT_EQ(states.steps.size(), result["steps"].size());
+
+  doc["solver"]["branching"] = "fundamental";
+  WriteJson(doc, dir / "scene.json");
+  const CommandResult f = RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "fundamental"));
+  EXPECT_EQ(f.exit_code, 0) << f.output;
+  const json primary = ReadJson(dir / "fundamental" / "result.json");
+  EXPECT_GT(primary["steps"].back()["negative_pivots"].get<int>(), 0);
+  ASSERT_FALSE(primary["warnings"].empty());
+  EXPECT_NE(primary["warnings"].back().get<std::string>().find("unstable equilibrium"),
+            std::string::npos);
+  EXPECT_NE(f.output.find("unstable"), std::string::npos) << f.output;  // the summary says so
+  for (const auto& e : primary["stability_events"]) {
+    EXPECT_EQ(e["kind"], "bifurcation");
+    EXPECT_EQ(e["branch"], "fundamental");
+  }
+}
+
 // ---- cancellation: exit 130, partial result -----------------------------------
 
 // Block drape 40 × 40 (1681 nodes) under load control with fixed steps of
