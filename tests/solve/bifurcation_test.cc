@@ -28,6 +28,9 @@
 
 #include "core/model/fabric_mesh.h"
 #include "core/model/scene.h"
+#include "core/solve/critical_modes.h"
+#include "core/solve/dof_map.h"
+#include "core/solve/equilibrium_system.h"
 #include "core/solve/shell_solver.h"
 #include "support/elastica.h"
 
@@ -403,6 +406,59 @@ TEST(Bifurcation, ShallowArchTakesTheAntisymmetricBranchAtTheSecondEulerThrust) 
   const double a = 10 * 5e-4 / std::sqrt(12.0);
   EXPECT_GT(std::abs(path.back().left - path.back().right), 0.5 * a);
   EXPECT_LT(path.back().force, at.force);  // the rod force falls along the branch
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// The critical mode from the factorised tangent: a straight clamped–clamped
+// strip held compressed just past its first critical load (1.05 P_E; the
+// second is 2.05 P_E) has one negative pivot, and the negative eigenvector
+// nearest zero is the first buckling mode, w ∝ 1 − cos(2πx/L) (Euler; past
+// the critical load the eigenvector drifts from it: 0.99963 at 1.5 P_E).
+TEST(CriticalModes, CompressedClampedStripGivesEulersFirstMode) {
+  Scene scene;
+  scene.fabric.outline = RectangleOutline{{kLength, kWidth}, {kLength / 2, 0.0}};
+  scene.fabric.mesh.elements = std::array<int, 2>{80, 1};
+  scene.material.thickness = kThickness;
+  scene.material.areal_weight = 0.0;
+  scene.material.membrane = IsotropicMembrane{kModulus, 0.0};
+  scene.material.bending.warp = LinearBending{};
+  scene.supports.push_back({"left", Selection{EdgeSelection{Side::kLeft}, {}}, Fixity::kClamp});
+  scene.supports.push_back({"right", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kClamp});
+  const ShellModel model = BuildShellModel(scene);
+  DofMap dofs(model.NodeCount());
+  for (const auto& s : model.supports)
+    for (int node : s.nodes) dofs.FixNode(node, s.fixity);
+  const double ei = kModulus * kWidth * std::pow(kThickness, 3) / 12;
+  const double strain =
+      1.05 * 4 * kPi * kPi * ei / (kLength * kLength) / (kModulus * kWidth * kThickness);
+  ShellState state = model.reference;
+  state.positions.col(0) *= 1 - strain;
+  EquilibriumSystem system(model, dofs);
+  system.Assemble(state, true);
+  ASSERT_EQ(system.Factorize().negative_pivots, 1);
+  const std::vector<CriticalMode> modes = CriticalModes(system, 1);
+  ASSERT_EQ(modes.size(), 1u);
+  EXPECT_LT(modes[0].eigenvalue, 0);
+  // The mode's z-translations along one edge against 1 − cos(2πx/L).
+  Eigen::VectorXd fe(0), exact(0);
+  for (int i = 0; i < model.NodeCount(); ++i) {
+    const int f = dofs.Free(kDofsPerNode * i + 2);
+    if (f < 0 || model.reference.positions(i, 1) > 0) continue;
+    fe.conservativeResize(fe.size() + 1);
+    exact.conservativeResize(exact.size() + 1);
+    fe(fe.size() - 1) = modes[0].shape(f);
+    exact(exact.size() - 1) = 1 - std::cos(2 * kPi * model.reference.positions(i, 0) / kLength);
+  }
+  const double correlation = std::abs(fe.dot(exact)) / (fe.norm() * exact.norm());
+  std::printf("eigenvalue %.3e, correlation with 1 - cos(2 pi x/L): %.6f\n",
+              modes[0].eigenvalue,
+              correlation);
+  EXPECT_GT(correlation, 0.9999);
 }
 
 }  // namespace
