@@ -1,4 +1,5 @@
-// MeshDisk and MeshPolygon: all-quad meshes through Gmsh's C++ API.
+// MeshDisk and MeshPolygon: all-quad meshes through Gmsh's C API, opened on
+// first use (gmsh_api.h).
 //
 // Gmsh keeps global state, so every use is serialised by one mutex and each
 // call runs in its own initialize ... finalize session (config files not
@@ -27,7 +28,7 @@
 //   the logger instead.
 #include "core/model/mesh.h"
 
-#include <gmsh.h>
+#include "core/model/gmsh_api.h"
 
 #include <algorithm>
 #include <array>
@@ -229,100 +230,190 @@ struct RawMesh {
   std::string warnings;            // Gmsh's warnings, for error messages
 };
 
+// A C API call's error code: non-zero throws Gmsh's last error message.
+void Check(int ierr, const char* call) {
+  if (ierr == 0) return;
+  const GmshApi& gmsh = Gmsh();
+  char* error = nullptr;
+  int ignored = 0;
+  gmsh.LoggerGetLastError(&error, &ignored);
+  std::string message = error ? error : "";
+  if (error) gmsh.Free(error);
+  if (message.empty()) message = std::string(call) + " returned error " + std::to_string(ierr);
+  throw std::runtime_error(message);
+}
+
 // One initialize ... finalize session; the caller holds GmshMutex().
 class GmshSession {
  public:
-  GmshSession() {
-    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-    gmsh::logger::start();
+  GmshSession() : gmsh_(Gmsh()) {
+    int ierr = 0;
+    gmsh_.Initialize(0, nullptr, /*readConfigFiles=*/0, &ierr);
+    Check(ierr, "gmshInitialize");
+    gmsh_.LoggerStart(&ierr);
+    Check(ierr, "gmshLoggerStart");
   }
   ~GmshSession() {
-    try {
-      gmsh::logger::stop();
-      gmsh::finalize();
-    } catch (...) {
-    }
+    int ierr = 0;
+    gmsh_.LoggerStop(&ierr);
+    gmsh_.Finalize(&ierr);
   }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 
   // This session's messages that start with `level` ("Error", "Warning"),
   // joined by "; ".
-  static std::string Messages(const char* level) {
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
+  std::string Messages(const char* level) const {
+    char** log = nullptr;
+    std::size_t count = 0;
+    int ierr = 0;
+    gmsh_.LoggerGet(&log, &count, &ierr);
     std::string joined;
-    for (const std::string& line : log) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string line = log[i];
+      gmsh_.Free(log[i]);
       if (line.rfind(level, 0) == 0) joined += (joined.empty() ? "" : "; ") + line;
     }
+    if (log) gmsh_.Free(log);
     return joined;
+  }
+
+ private:
+  const GmshApi& gmsh_;
+};
+
+void SetOptions(const GmshApi& gmsh) {
+  const std::pair<const char*, double> options[] = {
+      {"General.Terminal", 0},             // silent
+      {"General.Verbosity", 2},            // the logger keeps errors and warnings
+      {"General.AbortOnError", 1},         // stop meshing, do not throw
+      {"General.NumThreads", 1},           //
+      {"Mesh.RandomSeed", 1},              //
+      {"Mesh.Algorithm", 6},               // Frontal-Delaunay
+      {"Mesh.RecombineAll", 1},            //
+      {"Mesh.RecombinationAlgorithm", 2},  // simple full-quad
+      {"Mesh.SubdivisionAlgorithm", 0},    // full-quad already splits
+      {"Mesh.Smoothing", 1},               //
+      {"Mesh.ElementOrder", 1},            //
+      {"Mesh.MeshSizeFromPoints", 1},      //
+      {"Mesh.MeshSizeFromCurvature", 0},   //
+      {"Mesh.MeshSizeExtendFromBoundary", 1},
+  };
+  for (const auto& [name, value] : options) {
+    int ierr = 0;
+    gmsh.OptionSetNumber(name, value, &ierr);
+    Check(ierr, name);
+  }
+}
+
+// Gmsh's geo kernel, for the callers' curves: each call checked.
+struct Geo {
+  const GmshApi& gmsh;
+  int Point(double x, double y, double mesh_size) const {
+    int ierr = 0;
+    const int tag = gmsh.GeoAddPoint(x, y, 0, mesh_size, -1, &ierr);
+    Check(ierr, "gmshModelGeoAddPoint");
+    return tag;
+  }
+  int Line(int start, int end) const {
+    int ierr = 0;
+    const int tag = gmsh.GeoAddLine(start, end, -1, &ierr);
+    Check(ierr, "gmshModelGeoAddLine");
+    return tag;
+  }
+  int Arc(int start, int center, int end) const {
+    int ierr = 0;
+    const int tag = gmsh.GeoAddCircleArc(start, center, end, -1, 0, 0, 0, &ierr);
+    Check(ierr, "gmshModelGeoAddCircleArc");
+    return tag;
   }
 };
 
-void SetOptions() {
-  gmsh::option::setNumber("General.Terminal", 0);      // silent
-  gmsh::option::setNumber("General.Verbosity", 2);     // the logger keeps errors and warnings
-  gmsh::option::setNumber("General.AbortOnError", 1);  // stop meshing, do not throw
-  gmsh::option::setNumber("General.NumThreads", 1);
-  gmsh::option::setNumber("Mesh.RandomSeed", 1);
-  gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay
-  gmsh::option::setNumber("Mesh.RecombineAll", 1);
-  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);  // simple full-quad
-  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);    // full-quad already splits
-  gmsh::option::setNumber("Mesh.Smoothing", 1);
-  gmsh::option::setNumber("Mesh.ElementOrder", 1);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+// The nodes and quads Gmsh made, into `raw`; the arrays it allocated freed.
+void ReadMesh(const GmshApi& gmsh, RawMesh& raw) {
+  std::size_t* node_tags = nullptr;
+  double *coords = nullptr, *parametric = nullptr;
+  std::size_t n_tags = 0, n_coords = 0, n_parametric = 0;
+  int ierr = 0;
+  gmsh.MeshGetNodes(
+      &node_tags, &n_tags, &coords, &n_coords, &parametric, &n_parametric, -1, -1, 0, 0, &ierr);
+  Check(ierr, "gmshModelMeshGetNodes");
+  std::unordered_map<std::size_t, int> index;
+  index.reserve(n_tags);
+  raw.nodes.reserve(n_tags);
+  for (std::size_t i = 0; i < n_tags; ++i) {
+    index.emplace(node_tags[i], static_cast<int>(i));
+    raw.nodes.emplace_back(coords[3 * i], coords[3 * i + 1]);
+  }
+  gmsh.Free(node_tags);
+  gmsh.Free(coords);
+  gmsh.Free(parametric);
+
+  int* types = nullptr;
+  std::size_t n_types = 0, n_lists = 0, n_node_lists = 0;
+  std::size_t **element_tags = nullptr, **element_nodes = nullptr;
+  std::size_t *element_counts = nullptr, *node_counts = nullptr;
+  gmsh.MeshGetElements(&types,
+                       &n_types,
+                       &element_tags,
+                       &element_counts,
+                       &n_lists,
+                       &element_nodes,
+                       &node_counts,
+                       &n_node_lists,
+                       2,
+                       -1,
+                       &ierr);
+  Check(ierr, "gmshModelMeshGetElements");
+  for (std::size_t t = 0; t < n_types; ++t) {
+    if (types[t] == 3) {  // 4-node quadrangle
+      for (std::size_t e = 0; e < element_counts[t]; ++e) {
+        std::array<int, 4> quad;
+        for (int k = 0; k < 4; ++k) quad[k] = index.at(element_nodes[t][4 * e + k]);
+        raw.quads.push_back(quad);
+      }
+    } else {
+      raw.other_elements += element_counts[t];
+    }
+    gmsh.Free(element_tags[t]);
+    gmsh.Free(element_nodes[t]);
+  }
+  gmsh.Free(types);
+  gmsh.Free(element_tags);
+  gmsh.Free(element_counts);
+  gmsh.Free(element_nodes);
+  gmsh.Free(node_counts);
 }
 
-// Meshes the plane surface bounded by the curves `add_curves` adds to the geo
-// kernel (returning their tags in loop order); the curves' points carry the
-// mesh size. `note()` ends error messages.
+// Meshes the plane surface bounded by the curves `add_curves(geo)` adds to
+// the geo kernel (returning their tags in loop order); the curves' points
+// carry the mesh size. `note()` ends error messages.
 template <typename AddCurves>
 RawMesh RunGmsh(const char* function, const Note& note, AddCurves add_curves) {
   std::lock_guard<std::mutex> lock(GmshMutex());
   RawMesh raw;
   std::string errors;
   try {
+    const GmshApi& gmsh = Gmsh();
     GmshSession session;
-    SetOptions();
-    gmsh::model::add("drape");
-    const std::vector<int> curves = add_curves();
-    const int loop = gmsh::model::geo::addCurveLoop(curves);
-    const int surface = gmsh::model::geo::addPlaneSurface({loop});
-    gmsh::model::geo::mesh::setRecombine(2, surface);
-    gmsh::model::geo::synchronize();
-    gmsh::model::mesh::generate(2);
-    errors = GmshSession::Messages("Error");
-    raw.warnings = GmshSession::Messages("Warning");
-
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
-    std::unordered_map<std::size_t, int> index;
-    index.reserve(node_tags.size());
-    raw.nodes.reserve(node_tags.size());
-    for (std::size_t i = 0; i < node_tags.size(); ++i) {
-      index.emplace(node_tags[i], static_cast<int>(i));
-      raw.nodes.emplace_back(coords[3 * i], coords[3 * i + 1]);
-    }
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-    gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, -1);
-    for (std::size_t t = 0; t < types.size(); ++t) {
-      if (types[t] == 3) {  // 4-node quadrangle
-        for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
-          std::array<int, 4> quad;
-          for (int k = 0; k < 4; ++k) quad[k] = index.at(element_nodes[t][4 * e + k]);
-          raw.quads.push_back(quad);
-        }
-      } else {
-        raw.other_elements += element_tags[t].size();
-      }
-    }
-  } catch (const std::string& e) {  // Gmsh 4.8 throws its messages as strings
-    errors += (errors.empty() ? "" : "; ") + e;
+    SetOptions(gmsh);
+    int ierr = 0;
+    gmsh.ModelAdd("drape", &ierr);
+    Check(ierr, "gmshModelAdd");
+    std::vector<int> curves = add_curves(Geo{gmsh});
+    int loop = gmsh.GeoAddCurveLoop(curves.data(), curves.size(), -1, 0, &ierr);
+    Check(ierr, "gmshModelGeoAddCurveLoop");
+    const int surface = gmsh.GeoAddPlaneSurface(&loop, 1, -1, &ierr);
+    Check(ierr, "gmshModelGeoAddPlaneSurface");
+    gmsh.GeoMeshSetRecombine(2, surface, 45, &ierr);
+    Check(ierr, "gmshModelGeoMeshSetRecombine");
+    gmsh.GeoSynchronize(&ierr);
+    Check(ierr, "gmshModelGeoSynchronize");
+    gmsh.MeshGenerate(2, &ierr);
+    errors = session.Messages("Error");
+    raw.warnings = session.Messages("Warning");
+    if (errors.empty()) Check(ierr, "gmshModelMeshGenerate");
+    if (errors.empty()) ReadMesh(gmsh, raw);
   } catch (const std::exception& e) {
     errors += (errors.empty() ? "" : "; ") + std::string(e.what());
   }
@@ -447,17 +538,16 @@ Mesh MeshDisk(double radius, const Eigen::Vector2d& center, double element_size,
   RequireFeasibleCount(kFunction, kPi * radius * radius, element_size);
 
   const Note note = [] { return std::string(); };
-  const RawMesh raw = RunGmsh(kFunction, note, [&] {
+  const RawMesh raw = RunGmsh(kFunction, note, [&](const Geo& geo) {
     const double cx = center.x(), cy = center.y(), h = element_size;
-    const int c = gmsh::model::geo::addPoint(cx, cy, 0, h);
+    const int c = geo.Point(cx, cy, h);
     // Four quarter arcs: the geo kernel's arcs must be shorter than π.
-    const int p[4] = {gmsh::model::geo::addPoint(cx + radius, cy, 0, h),
-                      gmsh::model::geo::addPoint(cx, cy + radius, 0, h),
-                      gmsh::model::geo::addPoint(cx - radius, cy, 0, h),
-                      gmsh::model::geo::addPoint(cx, cy - radius, 0, h)};
+    const int p[4] = {geo.Point(cx + radius, cy, h),
+                      geo.Point(cx, cy + radius, h),
+                      geo.Point(cx - radius, cy, h),
+                      geo.Point(cx, cy - radius, h)};
     std::vector<int> arcs;
-    for (int k = 0; k < 4; ++k)
-      arcs.push_back(gmsh::model::geo::addCircleArc(p[k], c, p[(k + 1) % 4]));
+    for (int k = 0; k < 4; ++k) arcs.push_back(geo.Arc(p[k], c, p[(k + 1) % 4]));
     return arcs;
   });
   return Canonical(kFunction, raw, elevation, note);
@@ -473,13 +563,12 @@ Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
   RequireFeasibleCount(kFunction, std::abs(ShoelaceArea(outline)), element_size);
 
   const Note note = [&] { return NarrowestGapNote(outline, element_size); };
-  const RawMesh raw = RunGmsh(kFunction, note, [&] {
+  const RawMesh raw = RunGmsh(kFunction, note, [&](const Geo& geo) {
     std::vector<int> points;
-    for (const auto& v : outline)
-      points.push_back(gmsh::model::geo::addPoint(v.x(), v.y(), 0, element_size));
+    for (const auto& v : outline) points.push_back(geo.Point(v.x(), v.y(), element_size));
     std::vector<int> lines;
     for (std::size_t i = 0; i < points.size(); ++i)
-      lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % points.size()]));
+      lines.push_back(geo.Line(points[i], points[(i + 1) % points.size()]));
     return lines;
   });
   return Canonical(kFunction, raw, elevation, note);

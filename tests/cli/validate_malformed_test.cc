@@ -293,3 +293,30 @@ TEST(ValidateCli, MissingFileAndBadArguments) {
 
 }  // namespace
 }  // namespace drape
+
+namespace drape {
+namespace {
+
+// Gmsh is opened only when a scene needs it (a disk or a polygon): the
+// program does not link it (linking cost every process ~60 ms of start-up),
+// and a disk still meshes.
+TEST(ValidateCli, GmshIsLoadedOnlyForOutlinesThatNeedIt) {
+  const CommandResult ldd = test::RunCommand(std::string("ldd ") + DRAPE_CLI);
+  ASSERT_EQ(ldd.exit_code, 0) << ldd.output;
+  EXPECT_EQ(ldd.output.find("libgmsh"), std::string::npos) << ldd.output;
+
+  std::ifstream in(test::ScenesDir() / "block-drape.json");
+  nlohmann::json scene = nlohmann::json::parse(in);
+  scene["fabric"]["outline"] = {{"disk", {{"radius", "5 cm"}}}};
+  scene["fabric"]["mesh"] = {{"size", "1 cm"}};
+  scene["supports"] = {{{"name", "centre"}, {"select", {{"point", {0, 0}}}}, {"fix", "clamp"}}};
+  scene.erase("probes");
+  const std::string file = ::testing::TempDir() + "/disk.json";
+  std::ofstream(file) << scene.dump();
+  const CommandResult r = test::RunDrape("validate " + file);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("valid scene"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace drape
