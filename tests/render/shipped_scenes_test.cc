@@ -92,6 +92,31 @@ int NonFiniteVtu(const fs::path& file, std::string* what) {
   return bad;
 }
 
+// Speed work must not move the answers: each probe's final position within
+// 1e-4 of the part's length of what the engine computed before it
+// (tests/data/shipped_probes.json names the commit).
+void ExpectProbesAsBefore(const std::string& scene, const nlohmann::json& probes) {
+  std::ifstream in(test::SourceDir() / "tests" / "data" / "shipped_probes.json");
+  const nlohmann::json reference = nlohmann::json::parse(in);
+  ASSERT_TRUE(reference["scenes"].contains(scene))
+      << "tests/data/shipped_probes.json has no values for " << scene
+      << ": add them from a run of the engine it should agree with";
+  const nlohmann::json& before = reference["scenes"][scene];
+  const double allowed = 1e-4 * before["length"].get<double>();
+  ASSERT_EQ(probes.size(), before["probes"].size());
+  for (auto it = before["probes"].begin(); it != before["probes"].end(); ++it) {
+    ASSERT_TRUE(probes.contains(it.key())) << it.key();
+    double distance2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = probes[it.key()][k].get<double>() - it.value()[k].get<double>();
+      distance2 += d * d;
+    }
+    EXPECT_LE(std::sqrt(distance2), allowed)
+        << "probe '" << it.key() << "' moved from where commit "
+        << reference["commit"].get<std::string>() << " put it";
+  }
+}
+
 class ShippedScene : public ::testing::TestWithParam<fs::path> {};
 
 TEST_P(ShippedScene, EndsStableOrSaysWhyAndWritesOnlyFiniteNumbers) {
@@ -118,6 +143,8 @@ TEST_P(ShippedScene, EndsStableOrSaysWhyAndWritesOnlyFiniteNumbers) {
       warned |= w.get<std::string>().find("unstable equilibrium") != std::string::npos;
     EXPECT_TRUE(warned) << "the result does not warn of its " << pivots << " negative pivots";
   }
+
+  ExpectProbesAsBefore(scene.stem().string(), result["final"]["probes"]);
 
   std::vector<std::string> nulls;
   CollectNulls(result, "", nulls);
