@@ -2,7 +2,9 @@
 // of nodes, a random SPD 20 × 20 block per 4-node element. The SPD case takes
 // the supernodal LLᵀ; the indefinite case (the same matrix minus σI) fails it
 // and takes the simplicial LDLᵀ fallback with refined solves, so its time
-// includes the failed LLᵀ. Times are wall-clock (BLAS may use threads).
+// includes the failed LLᵀ. The second argument is the path: 0 kAuto (what
+// the solver uses), 1 kLltFirst, 2 kLdltOnly — to place kAuto's threshold.
+// Times are wall-clock (BLAS may use threads).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/SparseCore>
@@ -47,7 +49,7 @@ Eigen::SparseMatrix<double> ShellLike(int nodes_per_side, double sigma) {
 void FactorizeSolve(benchmark::State& state, double sigma) {
   const Eigen::SparseMatrix<double> k = ShellLike(static_cast<int>(state.range(0)), sigma);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(k.rows());
-  SparseCholesky chol;
+  SparseCholesky chol(static_cast<FactorizationPath>(state.range(1)));
   chol.Analyze(k);
   FactorizationInfo info;
   for (auto _ : state) {
@@ -75,18 +77,13 @@ void BM_Analyze(benchmark::State& state) {
   state.counters["dofs"] = static_cast<double>(k.rows());
 }
 
-BENCHMARK(BM_FactorizeSolveSpd)
-    ->Arg(20)
-    ->Arg(50)
-    ->Arg(100)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK(BM_FactorizeSolveIndefinite)
-    ->Arg(20)
-    ->Arg(50)
-    ->Arg(100)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+void SizesAndPaths(benchmark::internal::Benchmark* b) {
+  for (int n : {10, 20, 30, 50, 100})
+    for (int path : {0, 1, 2}) b->Args({n, path});
+  b->ArgNames({"n", "path"})->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+BENCHMARK(BM_FactorizeSolveSpd)->Apply(SizesAndPaths);
+BENCHMARK(BM_FactorizeSolveIndefinite)->Apply(SizesAndPaths);
 BENCHMARK(BM_Analyze)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

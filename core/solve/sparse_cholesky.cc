@@ -1,5 +1,7 @@
 #include "core/solve/sparse_cholesky.h"
 
+#include <dlfcn.h>
+#include <omp.h>
 #include <suitesparse/cholmod.h>
 
 #include <algorithm>
@@ -46,7 +48,9 @@ constexpr double kRefinementTolerance = 1e-14;
 // Measured (bench/sparse_cholesky_benchmark.cc): at 2 000 DOFs (1.3e7 flops)
 // the two paths take the same time for a definite matrix; at 12 500 (2.6e8)
 // the supernodal LLᵀ is twice as fast.
-constexpr double kLdltOnlyFlops = 2e7;
+constexpr double kLdltOnlyFlops = 1e6;
+// Below this many flops per factorisation the BLAS runs on one thread.
+constexpr double kThreadedBlasFlops = 1e9;
 
 const char* StatusText(int status) {
   switch (status) {
@@ -67,6 +71,50 @@ const char* StatusText(int status) {
 
 // Errors (negative status) throw; warnings (not positive definite, small
 // diagonal) are the caller's to interpret.
+// Inside its scope every OpenMP parallel region runs on the calling thread
+// alone. CHOLMOD's supernodal factorisation opens a region of a fixed thread
+// count (compiled in) for every supernode's scatter, far too little work per
+// region: on 2 cores their fork, join and spinning idle threads compete with
+// the BLAS threads that do the dense work (measured at 100 × 100: half the
+// factorisation time, and as much system time as user time).
+class SerialOpenMp {
+ public:
+  SerialOpenMp() : levels_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
+  ~SerialOpenMp() { omp_set_max_active_levels(levels_); }
+  SerialOpenMp(const SerialOpenMp&) = delete;
+  SerialOpenMp& operator=(const SerialOpenMp&) = delete;
+
+ private:
+  int levels_;
+};
+
+// OpenBLAS's thread count for the scope, when the BLAS is OpenBLAS (looked up
+// at run time: Debian may provide another libblas.so.3, which keeps its own
+// threading). Its idle threads wait spinning, so below a size where threads
+// pay they only take the cores from our assembly threads.
+class BlasThreads {
+ public:
+  explicit BlasThreads(int threads) {
+    static const auto get =
+        reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+    static const auto set =
+        reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (!get || !set || threads <= 0) return;
+    set_ = set;
+    previous_ = get();
+    if (previous_ != threads) set_(threads);
+  }
+  ~BlasThreads() {
+    if (set_) set_(previous_);
+  }
+  BlasThreads(const BlasThreads&) = delete;
+  BlasThreads& operator=(const BlasThreads&) = delete;
+
+ private:
+  void (*set_)(int) = nullptr;
+  int previous_ = 0;
+};
+
 void ThrowOnError(const cholmod_common& c, const char* call) {
   if (c.status < CHOLMOD_OK)
     throw std::runtime_error(std::string("SparseCholesky: CHOLMOD ") + call + " failed: " +
@@ -199,6 +247,7 @@ struct SparseCholesky::Impl {
 
   int n = -1;                     // -1: not analysed
   bool ldlt_only = false;         // small factorisations: skip the LLᵀ attempt
+  double flops = 0;               // of the LLᵀ, CHOLMOD's count
   std::vector<int> outer, inner;  // the analysed pattern
   // The fill-reducing ordering is applied here, not by CHOLMOD: both factors
   // are analysed in the natural order of `permuted` = P K Pᵀ, whose values
@@ -370,9 +419,9 @@ void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {
   m.inner.assign(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
   m.n = n;
   try {
-    const double flops = m.Order(upper);
+    m.flops = m.Order(upper);
     m.ldlt_only = path_ == FactorizationPath::kLdltOnly ||
-                  (path_ == FactorizationPath::kAuto && flops < kLdltOnlyFlops);
+                  (path_ == FactorizationPath::kAuto && m.flops < kLdltOnlyFlops);
     cholmod_sparse a = View(m.permuted);
     m.ll_factor = cholmod_analyze(&a, &m.ll);
     ThrowOnError(m.ll, "analyze");
@@ -402,6 +451,8 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
   // Supernodal LLᵀ: the positive-definiteness test and the fast path.
   cholmod_sparse a = View(m.permuted);
   if (!m.ldlt_only) {
+    const SerialOpenMp serial;
+    const BlasThreads blas(m.flops < kThreadedBlasFlops ? 1 : 0);
     cholmod_factorize(&a, m.ll_factor, &m.ll);
     ThrowOnError(m.ll, "factorize (LLᵀ)");
   }
