@@ -88,32 +88,22 @@ class SerialOpenMp {
   int levels_;
 };
 
-// OpenBLAS's thread count for the scope, when the BLAS is OpenBLAS (looked up
-// at run time: Debian may provide another libblas.so.3, which keeps its own
-// threading). Its idle threads wait spinning, so below a size where threads
-// pay they only take the cores from our assembly threads.
-class BlasThreads {
- public:
-  explicit BlasThreads(int threads) {
-    static const auto get =
-        reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    static const auto set =
-        reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    if (!get || !set || threads <= 0) return;
-    set_ = set;
-    previous_ = get();
-    if (previous_ != threads) set_(threads);
-  }
-  ~BlasThreads() {
-    if (set_) set_(previous_);
-  }
-  BlasThreads(const BlasThreads&) = delete;
-  BlasThreads& operator=(const BlasThreads&) = delete;
-
- private:
-  void (*set_)(int) = nullptr;
-  int previous_ = 0;
-};
+// Sets OpenBLAS's thread count when the BLAS is OpenBLAS (looked up at run
+// time: Debian may provide another libblas.so.3, which keeps its own
+// threading): one thread for a small factorisation, the count it started with
+// for a large one. Left as set, not restored: each raise wakes its idle
+// threads, which then wait spinning and take the cores from our assembly
+// threads (measured: a 20 × 20 drape's assembly 1.5 to 4 times slower).
+void UseBlasThreads(bool threaded) {
+  using Get = int (*)();
+  using Set = void (*)(int);
+  static const auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  static const auto set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  static const int initial = get ? get() : 1;
+  if (!get || !set) return;
+  const int wanted = threaded ? initial : 1;
+  if (get() != wanted) set(wanted);
+}
 
 void ThrowOnError(const cholmod_common& c, const char* call) {
   if (c.status < CHOLMOD_OK)
@@ -448,11 +438,11 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
   RowScales(m.permuted, m.scale);  // throws for a non-finite entry
   const double bound = std::max(1, m.n) * std::numeric_limits<double>::epsilon();
 
+  UseBlasThreads(m.flops >= kThreadedBlasFlops);
   // Supernodal LLᵀ: the positive-definiteness test and the fast path.
   cholmod_sparse a = View(m.permuted);
   if (!m.ldlt_only) {
     const SerialOpenMp serial;
-    const BlasThreads blas(m.flops < kThreadedBlasFlops ? 1 : 0);
     cholmod_factorize(&a, m.ll_factor, &m.ll);
     ThrowOnError(m.ll, "factorize (LLᵀ)");
   }
