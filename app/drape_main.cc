@@ -4,17 +4,19 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/render_program.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Drape Studio: nonlinear shell simulation of fabric parts", "drape"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "drape 0.1.0");
 
+  drape::app::RememberCommandLine(argc, argv);
   drape::app::CommandRunner runner;
   drape::app::AddValidateCommand(app, runner);
   drape::app::AddRunCommand(app, runner);
   drape::app::AddMaterialCommand(app, runner);
-#ifdef DRAPE_WITH_RENDER
+#if defined(DRAPE_WITH_RENDER) || defined(DRAPE_RENDER_PROGRAM)
   drape::app::AddRenderCommands(app, runner);
   drape::app::AddExportCommand(app, runner);
 #endif

@@ -8,9 +8,12 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/render_program.h"
+#ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
 #include "core/model/scene_error.h"
 #include "ui/render/surface_export.h"
+#endif
 
 namespace drape::app {
 namespace {
@@ -20,6 +23,12 @@ struct ExportArgs {
   bool solid = false;
 };
 
+#ifndef DRAPE_WITH_RENDER
+// VTK writes the files: the command runs in drape-vtk.
+int RunExport(const ExportArgs&) {
+  return RunInRenderProgram("export");
+}
+#else
 int RunExport(const ExportArgs& args) {
   try {
     const RunInput run = ReadRunInput(args.input);
@@ -47,6 +56,7 @@ int RunExport(const ExportArgs& args) {
   }
   return 1;
 }
+#endif
 
 }  // namespace
 

@@ -15,13 +15,16 @@
 #include <optional>
 #include <string>
 
-
 #include "app/commands.h"
+#include "app/render_program.h"
+#include "core/solve/element_fields.h"
+#ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
 #include "core/model/scene_error.h"
 #include "ui/render/animation.h"
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
+#endif
 
 namespace drape::app {
 namespace {
@@ -58,6 +61,7 @@ struct ViewArgs {
     cmd->add_flag("--no-overlay", no_overlay, "No text overlay");
   }
 
+#ifdef DRAPE_WITH_RENDER
   RenderOptions Options() const {
     RenderOptions o;
     std::tie(o.width, o.height) = ParseSize(size);
@@ -89,7 +93,22 @@ struct ViewArgs {
     o.overlay = !no_overlay;
     return o;
   }
+#endif
 };
+
+struct RenderArgs {
+  std::string input, output, step = "last";
+  ViewArgs view;
+};
+
+struct AnimateArgs {
+  std::string input, output;
+  double fps = 25;
+  double duration = 0;
+  ViewArgs view;
+};
+
+#ifdef DRAPE_WITH_RENDER
 
 std::vector<const ShellState*> Pointers(const RunInput& run) {
   std::vector<const ShellState*> states;
@@ -127,11 +146,6 @@ int Guarded(const char* command, Body body) {
 
 // ---- render ------------------------------------------------------------------
 
-struct RenderArgs {
-  std::string input, output, step = "last";
-  ViewArgs view;
-};
-
 int RunRender(const RenderArgs& args) {
   return Guarded("render", [&] {
     const RenderOptions options = args.view.Options();
@@ -150,13 +164,6 @@ std::atomic<bool> g_interrupted{false};
 void OnInterrupt(int) {
   g_interrupted = true;
 }
-
-struct AnimateArgs {
-  std::string input, output;
-  double fps = 25;
-  double duration = 0;
-  ViewArgs view;
-};
 
 int RunAnimate(const AnimateArgs& args) {
   return Guarded("animate", [&]() -> int {
@@ -200,8 +207,18 @@ int RunAnimate(const AnimateArgs& args) {
   });
 }
 
+#else
+int RunRender(const RenderArgs&) {
+  return RunInRenderProgram("render");
+}
+int RunAnimate(const AnimateArgs&) {
+  return RunInRenderProgram("animate");
+}
+#endif
+
 }  // namespace
 
+#ifdef DRAPE_WITH_RENDER
 StepObserver MakeRenderObserver(const Scene& scene,
                                 const ShellModel& model,
                                 const fs::path& directory,
@@ -230,6 +247,7 @@ StepObserver MakeRenderObserver(const Scene& scene,
     return StepDecision::kContinue;
   };
 }
+#endif
 
 void AddRenderCommands(CLI::App& app, CommandRunner& runner) {
   auto render = std::make_shared<RenderArgs>();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/render_program.h"
 #include "core/io/result_writer.h"
 #include "core/io/scene_reader.h"
 #include "core/model/scene_error.h"
@@ -104,6 +105,9 @@ struct InterruptGuard {
 };
 
 int RunRun(const RunArgs& args) {
+#ifndef DRAPE_WITH_RENDER
+  if (args.render_every > 0) return RunInRenderProgram("run");
+#endif
   CancellationToken cancel;
   InterruptGuard guard(cancel);
   Scene scene;
@@ -166,6 +170,7 @@ int RunRun(const RunArgs& args) {
 }  // namespace
 
 #ifndef DRAPE_WITH_RENDER
+// Not called: RunRun hands a run that renders to drape-vtk.
 StepObserver MakeRenderObserver(const Scene&,
                                 const ShellModel&,
                                 const std::filesystem::path&,

@@ -237,6 +237,7 @@ struct SparseCholesky::Impl {
 
   int n = -1;                     // -1: not analysed
   bool ldlt_only = false;         // small factorisations: skip the LLᵀ attempt
+  bool last_indefinite = false;   // the last LDLᵀ found a negative or zero pivot
   double flops = 0;               // of the LLᵀ, CHOLMOD's count
   std::vector<int> outer, inner;  // the analysed pattern
   // The fill-reducing ordering is applied here, not by CHOLMOD: both factors
@@ -441,12 +442,16 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
   UseBlasThreads(m.flops >= kThreadedBlasFlops);
   // Supernodal LLᵀ: the positive-definiteness test and the fast path.
   cholmod_sparse a = View(m.permuted);
-  if (!m.ldlt_only) {
+  // Past a critical point the tangents stay indefinite for a while: kAuto
+  // skips the LLᵀ attempt after an indefinite factorisation (it would fail
+  // after much of its work), and tries it again after a definite one.
+  const bool try_llt = !m.ldlt_only && !(path_ == FactorizationPath::kAuto && m.last_indefinite);
+  if (try_llt) {
     const SerialOpenMp serial;
     cholmod_factorize(&a, m.ll_factor, &m.ll);
     ThrowOnError(m.ll, "factorize (LLᵀ)");
   }
-  if (!m.ldlt_only && m.ll.status == CHOLMOD_OK && m.ll_factor->minor == static_cast<size_t>(m.n) &&
+  if (try_llt && m.ll.status == CHOLMOD_OK && m.ll_factor->minor == static_cast<size_t>(m.n) &&
       PivotsAboveBound(*m.ll_factor, m.scale, bound)) {
     m.active = Impl::Active::kLLt;
     info_.positive_definite = true;
@@ -483,6 +488,7 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
   info_.negative_pivots = negative;
   info_.zero_pivots = zero;
   info_.positive_definite = negative == 0 && zero == 0;
+  m.last_indefinite = !info_.positive_definite;
   return info_;
 }
 

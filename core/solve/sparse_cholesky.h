@@ -23,7 +23,8 @@ struct FactorizationInfo {
 };
 
 enum class FactorizationPath {
-  kAuto,      // LDLᵀ only below a measured size, LLᵀ first above it
+  kAuto,      // LDLᵀ only below a measured size, LLᵀ first above it unless the
+              // last factorisation was indefinite
   kLltFirst,  // supernodal LLᵀ, LDLᵀ when it is not positive definite
   kLdltOnly,  // simplicial LDLᵀ always
 };

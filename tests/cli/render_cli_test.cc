@@ -1,6 +1,6 @@
 // `drape render`, `drape animate`, `drape export` end to end on the solved
-// strip fold (resources/scenes/strip-fold.json): files of the asked size and frame count (ffprobe), no broken
-// file on failure, one clear message without a display.
+// strip fold (resources/scenes/strip-fold.json): files of the asked size and frame count (ffprobe),
+// no broken file on failure, one clear message without a display.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -170,6 +170,38 @@ TEST_F(RenderCli, RunRendersEveryNthStepWhileSolving) {
     pngs += e.path().extension() == ".png";
   EXPECT_EQ(pngs, steps / 10);
   EXPECT_EQ(PngSize(dir_ / "framed" / "frames" / "step_0010.png"), std::make_pair(1280u, 720u));
+}
+
+// `drape` hands the commands that draw to drape-vtk (app/render_program.h):
+// laid out as `cmake --install` does, it finds it in ../libexec/drape; where
+// there is none, it says so and exits 1 (and the other commands still work).
+TEST_F(RenderCli, AnInstalledDrapeFindsItsRenderProgram) {
+  const fs::path prefix = dir_ / "installed";
+  fs::create_directories(prefix / "bin");
+  fs::create_directories(prefix / "libexec/drape");
+  fs::copy_file(DRAPE_CLI, prefix / "bin/drape");
+  const std::string drape = (prefix / "bin/drape").string();
+  const std::string export_csv =
+      " export " + Fold() + " -o " + Out("installed-csv") + " --format csv --step last";
+
+  auto alone = test::RunCommand(drape + export_csv);
+  EXPECT_EQ(alone.exit_code, 1) << alone.output;
+  EXPECT_NE(alone.output.find("drape export: this installation has no renderer"), std::string::npos)
+      << alone.output;
+  EXPECT_EQ(test::RunCommand(drape + " validate '" +
+                             (test::ScenesDir() / "strip-fold.json").string() + "'")
+                .exit_code,
+            0);
+
+  fs::copy_file(fs::path(DRAPE_CLI).parent_path() / "drape-vtk",
+                prefix / "libexec/drape/drape-vtk");
+  const auto installed = test::RunCommand(drape + export_csv);
+  ASSERT_EQ(installed.exit_code, 0) << installed.output;
+  // The last step's nodes and elements.
+  int csv = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "installed-csv"))
+    csv += e.path().extension() == ".csv";
+  EXPECT_EQ(csv, 2);
 }
 
 TEST_F(RenderCli, WithoutADisplayRenderingSaysToUseXvfb) {

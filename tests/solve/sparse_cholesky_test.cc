@@ -383,6 +383,42 @@ TEST(SparseCholesky, RefactorizesWithOneAnalysis) {
 
 // The solution of the last factorisation does not depend on the caller's
 // matrix staying alive or unchanged.
+// kAuto on a matrix large enough for the supernodal LLᵀ: after an indefinite
+// factorisation the next one goes straight to the LDLᵀ (the LLᵀ would fail),
+// after a definite one the LLᵀ is tried again; the inertia is right each time.
+TEST(SparseCholesky, AutoSkipsTheLltRightAfterAnIndefiniteMatrix) {
+  std::mt19937_64 rng(11);
+  const int nx = 100, ny = 100, n = nx * ny;  // above kAuto's LDLᵀ-only size
+  const std::vector<double> ev = Laplacian2DEigenvalues(nx, ny);
+  SparseCholesky chol(FactorizationPath::kAuto);
+  chol.Analyze(Laplacian2D(nx, ny, 0.0));
+  struct Case {
+    int negative;
+    bool ldlt;  // expected path
+  };
+  // The first SPD matrix takes the LLᵀ; 0 after 5 is factorised by the LDLᵀ
+  // (skipped LLᵀ) and the 0 after it by the LLᵀ again.
+  for (const Case c : {Case{0, false},
+                       Case{5, true},
+                       Case{0, true},
+                       Case{0, false},
+                       Case{12, true},
+                       Case{3, true},
+                       Case{0, true},
+                       Case{0, false}}) {
+    int m = c.negative;
+    const double sigma = ShiftBelow(ev, m);
+    SCOPED_TRACE(testing::Message() << "m = " << m);
+    const SparseMatrix k = Laplacian2D(nx, ny, sigma);
+    const FactorizationInfo info = chol.Factorize(k);
+    EXPECT_EQ(info.negative_pivots, m);
+    EXPECT_EQ(info.positive_definite, m == 0);
+    EXPECT_EQ(info.used_ldlt, c.ldlt);
+    const Eigen::VectorXd b = RandomVector(n, rng);
+    EXPECT_LT(RelativeResidual(k, chol.Solve(b), b), 1e-10);
+  }
+}
+
 TEST(SparseCholesky, SolveUsesItsOwnCopyOfTheMatrix) {
   std::mt19937_64 rng(8);
   const std::vector<double> ev = Laplacian1DEigenvalues(500);
