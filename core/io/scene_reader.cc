@@ -11,6 +11,7 @@
 #include "core/io/kawabata_reader.h"
 #include "core/io/material_library.h"
 #include "core/model/scene_error.h"
+#include "core/model/sequencing_check.h"
 
 namespace drape {
 namespace {
@@ -136,6 +137,7 @@ Scene SceneParser::Read(const JsonCursor& root) {
   if (auto c = root.Find("solver")) scene.solver = ReadSolver(*c);
   scene.probes = ReadList<Probe>(root.Find("probes"), [&](auto& c) { return ReadProbe(c); });
   CheckStages(root, scene);
+  CheckSequencing(scene, scene.solver.sequencing);
   return scene;
 }
 
@@ -745,7 +747,8 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
                   "max_iterations",
                   "max_step_cuts",
                   "psi",
-                  "branching"});
+                  "branching",
+                  "sequencing"});
   SolverSettings s;
   auto fraction = [&](const char* key, double& out) {
     if (auto v = c.Find(key)) {
@@ -766,6 +769,7 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("max_steps", s.max_steps, 1);
   count("max_iterations", s.max_iterations, 1);
   count("max_step_cuts", s.max_step_cuts, 0);
+  count("sequencing", s.sequencing, 1);
   if (auto a = c.Find("acceleration")) s.acceleration = a->Boolean();
   if (auto p = c.Find("psi")) s.psi = p->PositiveQuantity(dim::kLength);
   if (auto b = c.Find("branching"))

@@ -185,6 +185,7 @@ json ToJson(const SolverSettings& s) {
          {"max_step_cuts", s.max_step_cuts},
          {"branching", ToString(s.branching)}};
   if (s.psi) j["psi"] = *s.psi;
+  if (s.sequencing > 1) j["sequencing"] = s.sequencing;
   return j;
 }
 

@@ -280,6 +280,9 @@ struct SolverSettings {
   int max_step_cuts = 10;
   std::optional<double> psi;  // [m]; default: a characteristic length of the part
   Branching branching = Branching::kStable;
+  // > 1: follow the path on the mesh this many times coarser in each
+  // direction, then solve the scene's mesh from its end (mesh sequencing).
+  int sequencing = 1;
   friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 

@@ -19,6 +19,7 @@
 #include "core/solve/dof_map.h"
 #include "core/solve/element_fields.h"
 #include "core/solve/equilibrium_system.h"
+#include "core/solve/mesh_sequencing.h"
 #include "core/solve/newton_solver.h"
 #include "core/solve/node_contact.h"
 #include "core/solve/stage_loading.h"
@@ -121,6 +122,14 @@ struct ShellSolver::Impl {
   bool Accept(const NewtonOutcome& newton, StageSummary& stage, const std::string& failure);
   bool RunLoadControl(int index, const StageLoading& loading, StageSummary& stage);
   bool RunArcLength(int index, const StageLoading& loading, StageSummary& stage);
+  // The stage's path on the coarsened mesh, then Newton on this one from its
+  // interpolated end (mesh_sequencing.h). Falls back to the path on this
+  // mesh, with a note, when the coarse run fails or the end is not stable.
+  bool RunSequenced(int index, const StageLoading& loading, StageSummary& stage);
+  bool RunPath(int index, const StageLoading& loading, StageSummary& stage) {
+    return scene.stages[index].control == StepControl::kLoad ? RunLoadControl(index, loading, stage)
+                                                             : RunArcLength(index, loading, stage);
+  }
   // Re-solves at the stage's end, springs re-anchored, until their force is
   // negligible: the stage then ends in the equilibrium without them.
   bool Settle(int index, const StageLoading& loading, StageSummary& stage);
@@ -658,6 +667,69 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
   return true;
 }
 
+bool ShellSolver::Impl::RunSequenced(int index, const StageLoading& loading, StageSummary& stage) {
+  const auto begin = Clock::now();
+  const Scene coarse_scene = CoarsenedScene(scene, options.sequencing);
+  SolverOptions coarse_options = options;
+  coarse_options.sequencing = 1;
+  ShellSolver coarse(coarse_scene, coarse_options);
+  const SolveSummary path = coarse.Solve({}, cancel);
+  stage.iterations += path.iterations;
+  summary.iterations += path.iterations;
+  retired_timers.assembly_s += path.assembly_s;
+  retired_timers.factorization_s += path.factorization_s;
+  retired_timers.solve_s += path.solve_s;
+  retired_timers.factorizations += path.factorizations;
+  retired_timers.indefinite_factorizations += path.indefinite_factorizations;
+  retired_timers.reused_factorizations += path.reused_factorizations;
+  if (path.termination == Termination::kCancelled) {
+    Stop(Termination::kCancelled, "cancelled in stage '" + stage.name + "' (on the coarse mesh)");
+    return false;
+  }
+  const auto [nx, ny] = *coarse_scene.fabric.mesh.elements;
+  char where[160];
+  std::snprintf(where,
+                sizeof where,
+                "mesh sequencing: the path on %d x %d elements (%d steps, %d iterations, %.3g s)",
+                nx,
+                ny,
+                path.steps,
+                path.iterations,
+                path.total_s);
+  auto fall_back = [&](const std::string& why) {
+    summary.notes.push_back(std::string(where) + " " + why +
+                            "; the path was followed on the scene's own mesh instead");
+    state = model.reference;
+    state.obstacles.assign(scene.obstacles.size(), ObstaclePlacement{});
+    if (contact) contact->Commit(state);
+    return RunPath(index, loading, stage);
+  };
+  if (path.termination != Termination::kCompleted) return fall_back("failed: " + path.message);
+  state = Prolongate(coarse.model(), coarse.state(), model);
+  const NewtonOutcome newton = SolveAtFixedLambda(1.0, loading);
+  stage.iterations += newton.iterations;
+  summary.iterations += newton.iterations;
+  if (newton.status == NewtonOutcome::Status::kCancelled) {
+    Stop(Termination::kCancelled, "cancelled in stage '" + stage.name + "'");
+    return false;
+  }
+  if (newton.status != NewtonOutcome::Status::kConverged)
+    return fall_back("ended where Newton on this mesh did not converge (" + newton.reason + ")");
+  if (newton.negative_pivots > 0)
+    return fall_back("ended where this mesh's tangent has " +
+                     std::to_string(newton.negative_pivots) + " negative pivots");
+  char done[120];
+  std::snprintf(done,
+                sizeof done,
+                ", then %d Newton iterations on this mesh from its end (%.3g s in all)",
+                newton.iterations,
+                SecondsSince(begin));
+  summary.notes.push_back(std::string(where) + done);
+  stage.steps = 1;
+  stage.final_lambda = 1;
+  return Emit(index, 1, 1.0, loading, StepOf(newton));
+}
+
 StabilityEvent ShellSolver::Impl::Classify(ArcLengthStepper& stepper,
                                            const ContinuationStep& step) {
   StabilityEvent e;
@@ -797,10 +869,10 @@ bool ShellSolver::Impl::RunStage(int index) {
   bool ok;
   if (spec.kind == StageKind::kHold)
     ok = RunHold(index, loading, stage);
-  else if (spec.control == StepControl::kLoad)
-    ok = RunLoadControl(index, loading, stage);
+  else if (options.sequencing > 1)
+    ok = RunSequenced(index, loading, stage);
   else
-    ok = RunArcLength(index, loading, stage);
+    ok = RunPath(index, loading, stage);
   if (ok && contact && contact->stabilization() > 0) ok = Settle(index, loading, stage);
   if (ok && last_negative_pivots > 0) {
     // Only with `fundamental` branching, past a limit point, or on a branch
@@ -835,6 +907,7 @@ ShellSolver::ShellSolver(const Scene& scene, ShellModel model, const SolverOptio
                      "nothing holds the fabric: it is free to move as a rigid body; add a support "
                      "or a gripper");
   CheckHoldsDoNotConflict(scene, impl_->model);
+  CheckSequencing(scene, options.sequencing);
 }
 
 ShellSolver::~ShellSolver() = default;

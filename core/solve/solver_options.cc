@@ -28,6 +28,7 @@ SolverOptions SolverOptions::FromScene(const SolverSettings& settings) {
   o.max_step_cuts = settings.max_step_cuts;
   o.psi = settings.psi.value_or(0.0);
   o.branching = settings.branching;
+  o.sequencing = settings.sequencing;
   return o;
 }
 
@@ -84,6 +85,7 @@ bool SolverOptions::IsValid(std::string* error) const {
                max_augmentation_iterations,
                "max_augmentation_iterations >= 0",
                error) &&
+         Check(sequencing >= 1, "sequencing", sequencing, "sequencing >= 1", error) &&
          Check(threads >= 0, "threads", threads, "threads >= 0", error);
 }
 

@@ -49,6 +49,8 @@ struct SolverOptions {
   // At a bifurcation: switch to the branch a real part takes (kStable) or
   // follow the primary path (kFundamental, the paper's behaviour).
   Branching branching = Branching::kStable;
+  // > 1: mesh sequencing (core/solve/mesh_sequencing.h) with this factor.
+  int sequencing = 1;
   // Threads for element assembly; 0 uses OpenMP's default.
   int threads = 0;
 

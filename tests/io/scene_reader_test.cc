@@ -42,6 +42,19 @@ std::string ErrorOf(const json& doc) {
   return "(no error)";
 }
 
+TEST(SceneReader, SequencingMustDivideTheMeshOfOneWeightStage) {
+  json doc = Minimal();
+  doc["fabric"]["mesh"]["elements"] = {8, 4};
+  doc["solver"]["sequencing"] = 2;
+  EXPECT_EQ(SceneFromJson(doc).solver.sequencing, 2);
+  doc["solver"]["sequencing"] = 0;
+  EXPECT_EQ(ErrorOf(doc), "solver.sequencing: must be at least 1, got 0");
+  doc["solver"]["sequencing"] = 3;
+  EXPECT_EQ(ErrorOf(doc),
+            "solver.sequencing: 3 must divide the mesh's 8 × 4 elements and leave at least 2 "
+            "each way");
+}
+
 TEST(SceneReader, ReadsEveryExampleScene) {
   for (const auto& file : test::ExampleScenes()) {
     SCOPED_TRACE(file.string());

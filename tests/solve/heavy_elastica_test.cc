@@ -178,6 +178,46 @@ TEST(HeavyElastica, TipMatchesOdeFromSmallToLargeDeflection) {
   }
 }
 
+// Mesh sequencing (solver.sequencing): the path on 20 × 2 elements, then
+// Newton on 40 × 4 from its interpolated end. One step, at the elastica as
+// closely as the path on 40 × 4 itself, and the same state as that path's
+// (the end of a drape does not depend on the path).
+TEST(HeavyElastica, SequencedSolveEndsOnTheElastica) {
+  const double alpha = 32;
+  test::StripSpec spec;
+  spec.width = 0.02;
+  Scene scene = test::HeavyStrip(spec, alpha, 0.01);
+  scene.fabric.mesh.elements = std::array<int, 2>{40, 4};
+  const ElasticaEnd exact = SolveHeavyElastica(alpha);
+  Eigen::Vector3d tips[2];
+  for (int sequencing : {1, 2}) {
+    scene.solver.sequencing = sequencing;
+    ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+    int steps = 0;
+    const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+      tips[sequencing - 1] = Probe(s, "tip") / spec.length;
+      ++steps;
+      return StepDecision::kContinue;
+    }});
+    ASSERT_TRUE(summary.IsComplete()) << summary.FullReport();
+    const Eigen::Vector3d& tip = tips[sequencing - 1];
+    const double error = std::hypot(tip.x() - exact.x, tip.z() - exact.z);
+    std::printf("α = 32, 40 × 4, sequencing %d: %d steps, %d factorisations, tip error %.3e L\n",
+                sequencing,
+                steps,
+                summary.factorizations,
+                error);
+    EXPECT_LT(error, 0.005);
+    if (sequencing == 2) {
+      EXPECT_EQ(steps, 1);
+      ASSERT_FALSE(summary.notes.empty());
+      EXPECT_NE(summary.notes.back().find("the path on 20 x 2 elements"), std::string::npos)
+          << summary.notes.back();
+    }
+  }
+  EXPECT_LT((tips[1] - tips[0]).norm(), 1e-6);
+}
+
 TEST(HeavyElastica, PeirceCantileverChordAngleAtBendingLengthHalfTheStrip) {
   // c = L/2 ⇔ α = (L/c)³ = 8.
   const double alpha = 8.0;

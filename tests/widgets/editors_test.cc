@@ -643,6 +643,15 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   panel->targetIterations()->setValue(4);
   emit panel->targetIterations()->editingFinished();
   EXPECT_EQ(doc->scene().solver.target_iterations, 4);
+  // Mesh sequencing: the strip fold moves a gripper in three stages, so it
+  // is refused with the reader's message and the field goes back.
+  EXPECT_EQ(panel->sequencing()->text().toStdString(), "off");
+  panel->sequencing()->setValue(2);
+  emit panel->sequencing()->editingFinished();
+  EXPECT_EQ(doc->scene().solver.sequencing, 1);
+  EXPECT_EQ(panel->sequencing()->value(), 1);
+  EXPECT_NE(panel->materialMessage().toStdString().find("solver.sequencing"), std::string::npos)
+      << panel->materialMessage().toStdString();
   // What happens at a bifurcation: an undoable choice, shown back.
   QComboBox* branching = panel->branching();
   EXPECT_EQ(branching->currentData().toString().toStdString(), "stable");

@@ -276,6 +276,14 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   solver_form->addRow("tolerance ‖R‖/‖R₀‖", tolerance_);
   solver_form->addRow("target iterations N_p", target_iterations_);
   solver_form->addRow("max steps", max_steps_);
+  sequencing_ = new QSpinBox(solver);
+  sequencing_->setRange(1, 20);
+  sequencing_->setSpecialValueText("off");
+  sequencing_->setToolTip(
+      "Mesh sequencing for a one-stage drape: follow the path on a mesh this many times coarser "
+      "in each direction, then solve this mesh from its end in a few Newton iterations (the "
+      "result then has one step). Must divide the mesh's element counts");
+  solver_form->addRow("coarse path, factor", sequencing_);
   branching_ = new QComboBox(solver);
   branching_->addItem("take the stable branch", "stable");
   branching_->addItem("follow the primary path", "fundamental");
@@ -296,6 +304,10 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   connect(max_steps_, &QSpinBox::editingFinished, this, [this, edit] {
     edit("max steps", [](Scene& s, double v) { s.solver.max_steps = static_cast<int>(v); })(
         max_steps_->value(), QString::number(max_steps_->value()));
+  });
+  connect(sequencing_, &QSpinBox::editingFinished, this, [this, edit] {
+    edit("mesh sequencing", [](Scene& s, double v) { s.solver.sequencing = static_cast<int>(v); })(
+        sequencing_->value(), QString::number(sequencing_->value()));
   });
   connect(branching_, &QComboBox::activated, this, [this](int i) {
     if (refreshing_) return;
@@ -489,6 +501,7 @@ void PropertyPanel::refresh() {
   tolerance_->setValue(s.solver.tolerance, QString::number(s.solver.tolerance));
   target_iterations_->setValue(s.solver.target_iterations);
   max_steps_->setValue(s.solver.max_steps);
+  sequencing_->setValue(s.solver.sequencing);
   branching_->setCurrentIndex(s.solver.branching == Branching::kStable ? 0 : 1);
   refreshing_ = false;
 }

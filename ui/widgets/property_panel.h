@@ -70,6 +70,7 @@ class PropertyPanel : public QWidget {
   QSpinBox* targetIterations() const { return target_iterations_; }
   QSpinBox* maxSteps() const { return max_steps_; }
   QComboBox* branching() const { return branching_; }
+  QSpinBox* sequencing() const { return sequencing_; }
   QLabel* meshInfo() const { return mesh_info_; }
   QString fabricMessage() const;
   QString materialMessage() const;
@@ -116,7 +117,7 @@ class PropertyPanel : public QWidget {
   QComboBox* preset_;
   QComboBox* branching_;
   QuantityField* tolerance_;
-  QSpinBox *target_iterations_, *max_steps_;
+  QSpinBox *target_iterations_, *max_steps_, *sequencing_;
   bool refreshing_ = false;
 };
 
