@@ -19,11 +19,9 @@
 # written into a temporary folder. Results: docs/performance.md.
 set -euo pipefail
 
-runs=3
-if [[ "${1:-}" == "-n" ]]; then
-  runs=$2
-  shift 2
-fi
+source "$(dirname "$0")/timing_lib.sh"
+parse_runs 3 "$@"
+set -- "${rest[@]}"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 drape=$(realpath "${1:-$root/build/app/drape}")
 if ! command -v ccx >/dev/null; then
@@ -35,7 +33,6 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 seconds() { # command... → wall seconds on stdout (its own output discarded)
   local TIMEFORMAT=%3R elapsed
   # The shell's own clock: no helper process inside the timed span.

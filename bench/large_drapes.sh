@@ -9,17 +9,14 @@
 #   bench/large_drapes.sh [-n RUNS] [DRAPE]    (default build/app/drape)
 set -euo pipefail
 
-runs=3
-if [[ "${1:-}" == "-n" ]]; then
-  runs=$2
-  shift 2
-fi
+source "$(dirname "$0")/timing_lib.sh"
+parse_runs 3 "$@"
+set -- "${rest[@]}"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 drape=$(realpath "${1:-$root/build/app/drape}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 # scene n modulus sequencing → a variant of the block drape
 variant() {

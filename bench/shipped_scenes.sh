@@ -9,18 +9,15 @@
 # e.g. bench/shipped_scenes.sh -n 5 build/app/drape /tmp/drape-before
 set -euo pipefail
 
-runs=5
-if [[ "${1:-}" == "-n" ]]; then
-  runs=$2
-  shift 2
-fi
+source "$(dirname "$0")/timing_lib.sh"
+parse_runs 5 "$@"
+set -- "${rest[@]}"
 after=${1:?usage: bench/shipped_scenes.sh [-n RUNS] DRAPE [BASELINE_DRAPE]}
 before=${2:-}
 scenes_dir="$(cd "$(dirname "$0")/.." && pwd)/resources/scenes"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 # One run: prints "seconds steps iterations factorisations".
 run_once() {

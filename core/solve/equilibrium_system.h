@@ -21,6 +21,16 @@ struct SystemTimers {
   int factorizations = 0;
   int indefinite_factorizations = 0;
   int reused_factorizations = 0;  // asked for a matrix already factorised
+
+  SystemTimers& operator+=(const SystemTimers& o) {
+    assembly_s += o.assembly_s;
+    factorization_s += o.factorization_s;
+    solve_s += o.solve_s;
+    factorizations += o.factorizations;
+    indefinite_factorizations += o.indefinite_factorizations;
+    reused_factorizations += o.reused_factorizations;
+    return *this;
+  }
 };
 
 class EquilibriumSystem {

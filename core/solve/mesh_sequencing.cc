@@ -6,7 +6,6 @@
 #include <variant>
 #include <vector>
 
-#include <Eigen/LU>
 #include "core/mechanics/director.h"
 
 #include "core/mechanics/bilinear_quad.h"
@@ -41,7 +40,7 @@ class ElementGrid {
   bool Locate(const Eigen::Vector2d& p, int& element, double& xi, double& eta) const {
     const auto [i, j] = Cell(p);
     for (int e : buckets_[static_cast<size_t>(j) * cells_ + i])
-      if (Inside(e, p, xi, eta)) {
+      if (LocateInElement(mesh_, e, Vec2{p.x(), p.y()}, xi, eta)) {
         element = e;
         return true;
       }
@@ -52,23 +51,6 @@ class ElementGrid {
   std::pair<int, int> Cell(const Eigen::Vector2d& p) const {
     auto clamp = [&](double v) { return std::clamp(static_cast<int>(v), 0, cells_ - 1); };
     return {clamp((p.x() - lo_.x()) / size_.x()), clamp((p.y() - lo_.y()) / size_.y())};
-  }
-
-  // (ξ, η) by Newton on the bilinear map; inside within round-off.
-  bool Inside(int e, const Eigen::Vector2d& p, double& xi, double& eta) const {
-    Eigen::Matrix<double, 2, 4> corners;
-    for (int k = 0; k < 4; ++k) corners.col(k) = mesh_.positions.row(mesh_.quads(e, k)).head<2>();
-    xi = eta = 0;
-    for (int it = 0; it < 20; ++it) {
-      Eigen::Vector4d n;
-      Eigen::Matrix<double, 4, 2> dn;
-      BilinearShape(xi, eta, n, &dn);
-      const Eigen::Vector2d step = (corners * dn).inverse() * (p - corners * n);
-      xi += step(0);
-      eta += step(1);
-      if (step.norm() < 1e-13) break;
-    }
-    return std::abs(xi) <= 1 + 1e-9 && std::abs(eta) <= 1 + 1e-9;
   }
 
   const Mesh& mesh_;

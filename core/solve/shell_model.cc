@@ -33,26 +33,6 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> ReferenceDirectors(const Mesh& mesh) {
   return t;
 }
 
-// (ξ, η) of the reference point (x, y) in element e, by Newton on the bilinear map.
-bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta) {
-  Eigen::Matrix<double, 2, 4> corners;
-  for (int k = 0; k < 4; ++k) corners.col(k) = mesh.positions.row(mesh.quads(e, k)).head<2>();
-  xi = eta = 0;
-  for (int it = 0; it < 20; ++it) {
-    Eigen::Vector4d n;
-    Eigen::Matrix<double, 4, 2> dn;
-    BilinearShape(xi, eta, n, &dn);
-    const Eigen::Vector2d x = corners * n;
-    const Eigen::Matrix2d j = corners * dn;
-    const Eigen::Vector2d step = j.inverse() * (Eigen::Vector2d(p[0], p[1]) - x);
-    xi += step(0);
-    eta += step(1);
-    if (step.norm() < 1e-13) break;
-  }
-  const double slack = 1e-9;
-  return std::abs(xi) <= 1 + slack && std::abs(eta) <= 1 + slack;
-}
-
 ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe) {
   for (int e = 0; e < mesh.ElementCount(); ++e) {
     double xi, eta;
@@ -75,6 +55,25 @@ ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe) {
 }
 
 }  // namespace
+
+bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta) {
+  Eigen::Matrix<double, 2, 4> corners;
+  for (int k = 0; k < 4; ++k) corners.col(k) = mesh.positions.row(mesh.quads(e, k)).head<2>();
+  xi = eta = 0;
+  for (int it = 0; it < 20; ++it) {
+    Eigen::Vector4d n;
+    Eigen::Matrix<double, 4, 2> dn;
+    BilinearShape(xi, eta, n, &dn);
+    const Eigen::Vector2d x = corners * n;
+    const Eigen::Matrix2d j = corners * dn;
+    const Eigen::Vector2d step = j.inverse() * (Eigen::Vector2d(p[0], p[1]) - x);
+    xi += step(0);
+    eta += step(1);
+    if (step.norm() < 1e-13) break;
+  }
+  const double slack = 1e-9;
+  return std::abs(xi) <= 1 + slack && std::abs(eta) <= 1 + slack;
+}
 
 ShellModel BuildShellModel(const Scene& scene) {
   return BuildShellModel(scene, MeshFabric(scene.fabric));

@@ -65,6 +65,10 @@ ShellModel BuildShellModel(const Scene& scene);
 // (patch tests, imported meshes). Selections still use the outline.
 ShellModel BuildShellModel(const Scene& scene, Mesh mesh);
 
+// (ξ, η) of the reference point `p` (x, y) in element `e`, by Newton on the
+// bilinear map; false when it lies outside the element (beyond round-off).
+bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta);
+
 // Position of a probe in a state: Σ N_I(ξ, η) φ_I over its element.
 Eigen::Vector3d ProbePosition(const ShellModel& model,
                               const ProbePoint& probe,

@@ -233,15 +233,7 @@ DofMap ShellSolver::Impl::StageDofs() const {
 
 void ShellSolver::Impl::UseDofs(DofMap stage_dofs) {
   if (dofs && system && *dofs == stage_dofs) return;
-  if (system) {
-    const SystemTimers& t = system->timers();
-    retired_timers.assembly_s += t.assembly_s;
-    retired_timers.factorization_s += t.factorization_s;
-    retired_timers.solve_s += t.solve_s;
-    retired_timers.factorizations += t.factorizations;
-    retired_timers.indefinite_factorizations += t.indefinite_factorizations;
-    retired_timers.reused_factorizations += t.reused_factorizations;
-  }
+  if (system) retired_timers += system->timers();
   system.reset();
   dofs = std::make_unique<DofMap>(std::move(stage_dofs));
   system = std::make_unique<EquilibriumSystem>(model, *dofs, contact.get());
@@ -676,12 +668,12 @@ bool ShellSolver::Impl::RunSequenced(int index, const StageLoading& loading, Sta
   const SolveSummary path = coarse.Solve({}, cancel);
   stage.iterations += path.iterations;
   summary.iterations += path.iterations;
-  retired_timers.assembly_s += path.assembly_s;
-  retired_timers.factorization_s += path.factorization_s;
-  retired_timers.solve_s += path.solve_s;
-  retired_timers.factorizations += path.factorizations;
-  retired_timers.indefinite_factorizations += path.indefinite_factorizations;
-  retired_timers.reused_factorizations += path.reused_factorizations;
+  retired_timers += SystemTimers{path.assembly_s,
+                                 path.factorization_s,
+                                 path.solve_s,
+                                 path.factorizations,
+                                 path.indefinite_factorizations,
+                                 path.reused_factorizations};
   if (path.termination == Termination::kCancelled) {
     Stop(Termination::kCancelled, "cancelled in stage '" + stage.name + "' (on the coarse mesh)");
     return false;
@@ -988,15 +980,7 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
     m.summary.warnings.push_back(warning);
   }
   SystemTimers t = m.retired_timers;
-  if (m.system) {
-    const SystemTimers& now = m.system->timers();
-    t.assembly_s += now.assembly_s;
-    t.factorization_s += now.factorization_s;
-    t.solve_s += now.solve_s;
-    t.factorizations += now.factorizations;
-    t.indefinite_factorizations += now.indefinite_factorizations;
-    t.reused_factorizations += now.reused_factorizations;
-  }
+  if (m.system) t += m.system->timers();
   m.summary.free_dofs = m.dofs ? m.dofs->FreeCount() : -1;
   m.summary.assembly_s = t.assembly_s;
   m.summary.factorization_s = t.factorization_s;
