@@ -1,0 +1,41 @@
+// Distances between the fabric's surface primitives, the geometry of
+// self-contact (C-IPC, Li, Kaufman, Jiang et al. 2021): a point and a
+// triangle, two edges. Each returns the squared distance and where the
+// closest points lie, so a barrier can tell which region (face, edge,
+// vertex) it is in.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace drape {
+
+struct PointTriangleDistance {
+  double squared = 0;
+  // The closest point of the triangle is Σ barycentric_i x_i.
+  Eigen::Vector3d barycentric = Eigen::Vector3d::Zero();
+};
+
+// p against triangle (a, b, c), by the Voronoi regions of its vertices,
+// edges and face (Ericson, Real-Time Collision Detection, §5.1.5). A
+// degenerate triangle gives the distance to its edges.
+PointTriangleDistance PointTriangle(const Eigen::Vector3d& p,
+                                    const Eigen::Vector3d& a,
+                                    const Eigen::Vector3d& b,
+                                    const Eigen::Vector3d& c);
+
+struct EdgeEdgeDistance {
+  double squared = 0;
+  // The closest points are a0 + s (a1 − a0) and b0 + t (b1 − b0).
+  double s = 0, t = 0;
+};
+
+// Segment (a0, a1) against segment (b0, b1) (Ericson §5.1.9); degenerate
+// segments included. Segments parallel to within ~1e-7 rad are taken as
+// parallel (the closest-point formula divides by sin²θ): the distance is then
+// exact to ~1e-7 of their length, and (s, t) one of the closest pairs.
+EdgeEdgeDistance EdgeEdge(const Eigen::Vector3d& a0,
+                          const Eigen::Vector3d& a1,
+                          const Eigen::Vector3d& b0,
+                          const Eigen::Vector3d& b1);
+
+}  // namespace drape
