@@ -15,6 +15,7 @@
 #include "core/solve/dof_map.h"
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/node_contact.h"
+#include "core/solve/self_proximity.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/shell_solver.h"
 #include "scene_solve.h"
@@ -67,6 +68,36 @@ BENCHMARK(BM_AssembleOnTable)
     ->ArgsProduct({{20, 100}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The self-contact broad phase once per Newton iteration (issue 17): a
+// 20 × 10 cm sheet of 200 × 100 elements (20 301 nodes) or 100 × 50 (5 151),
+// folded flat onto itself one thickness (h = 0.5 mm) apart, every pair within
+// 1.5 h (the barrier's reach: the thickness and half of it) and more than
+// 1 cm apart at rest.
+void BM_SelfProximity(benchmark::State& bench) {
+  const int nx = static_cast<int>(bench.range(0)), ny = nx / 2;
+  Mesh mesh;
+  mesh.positions.resize((nx + 1) * (ny + 1), 3);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      mesh.positions.row(j * (nx + 1) + i) << 0.2 * i / nx, 0.1 * j / ny, 0;
+  mesh.quads.resize(nx * ny, 4);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int n = j * (nx + 1) + i;
+      mesh.quads.row(j * nx + i) << n, n + 1, n + nx + 2, n + nx + 1;
+    }
+  Positions folded = mesh.positions;
+  for (int i = 0; i < folded.rows(); ++i)
+    if (folded(i, 0) > 0.1 + 1e-12) folded.row(i) << 0.2 - folded(i, 0), folded(i, 1), 5e-4;
+  const SelfProximity proximity(mesh, 0.01);
+  ProximityPairs pairs;
+  for (auto _ : bench) pairs = proximity.Candidates(folded, 7.5e-4);
+  bench.counters["nodes"] = static_cast<double>(folded.rows());
+  bench.counters["point_triangle"] = static_cast<double>(pairs.point_triangle.size());
+  bench.counters["edge_edge"] = static_cast<double>(pairs.edge_edge.size());
+}
+BENCHMARK(BM_SelfProximity)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace drape
