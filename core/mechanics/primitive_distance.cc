@@ -2,7 +2,11 @@
 
 #include <Eigen/Geometry>
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
+#include <array>
+#include <vector>
 
 namespace drape {
 namespace {
@@ -97,6 +101,102 @@ EdgeEdgeDistance EdgeEdge(const V3& a0, const V3& a1, const V3& b0, const V3& b1
   out.t = t;
   out.squared = ((a0 + s * d1) - (b0 + t * d2)).squaredNorm();
   return out;
+}
+
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// f = min_y |r(x, y)|², r = Σ_i w_i(y) x_i with w affine in y: w = w* + Σ_k
+// (y_k − y_k*) e_k over the free parameters (columns of `e`), at the
+// minimiser y* where w = `w`.
+DistanceDerivatives Envelope(const std::array<const Eigen::Vector3d*, 4>& x,
+                             const Eigen::Vector4d& w,
+                             const Eigen::Matrix<double, 4, Eigen::Dynamic>& e) {
+  DistanceDerivatives out;
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 4; ++i) r += w(i) * *x[i];
+  out.squared = r.squaredNorm();
+  for (int i = 0; i < 4; ++i) {
+    out.gradient.segment<3>(3 * i) = 2 * w(i) * r;
+    for (int j = 0; j < 4; ++j)
+      out.hessian.block<3, 3>(3 * i, 3 * j) = 2 * w(i) * w(j) * Eigen::Matrix3d::Identity();
+  }
+  const int m = static_cast<int>(e.cols());
+  if (m == 0) return out;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, m);  // ∂r/∂y_k
+  for (int k = 0; k < m; ++k) {
+    d.col(k).setZero();
+    for (int i = 0; i < 4; ++i) d.col(k) += e(i, k) * *x[i];
+  }
+  const Eigen::MatrixXd g_yy = 2 * d.transpose() * d;
+  Eigen::Matrix<double, 12, Eigen::Dynamic> g_xy(12, m);
+  for (int k = 0; k < m; ++k)
+    for (int i = 0; i < 4; ++i) g_xy.block<3, 1>(3 * i, k) = 2 * (e(i, k) * r + w(i) * d.col(k));
+  out.hessian -= g_xy * g_yy.ldlt().solve(g_xy.transpose());
+  return out;
+}
+
+constexpr double kInterior = 1e-12;  // a parameter this far inside its range is free
+
+}  // namespace
+
+DistanceDerivatives PointTriangleDerivatives(const Eigen::Vector3d& p,
+                                             const Eigen::Vector3d& a,
+                                             const Eigen::Vector3d& b,
+                                             const Eigen::Vector3d& c) {
+  const PointTriangleDistance closest = PointTriangle(p, a, b, c);
+  const Eigen::Vector3d& u = closest.barycentric;
+  const Eigen::Vector4d w(1, -u(0), -u(1), -u(2));
+  // Free directions of the closest point: along each edge between two
+  // vertices with a nonzero weight (two directions on the face, one on an
+  // edge, none at a vertex). Moving weight from vertex i to vertex j changes
+  // w by +1 at i, −1 at j (w holds −u).
+  std::vector<Eigen::Vector4d> directions;
+  const bool in[3] = {u(0) > kInterior, u(1) > kInterior, u(2) > kInterior};
+  const int count = in[0] + in[1] + in[2];
+  auto along = [](int from, int to) {
+    Eigen::Vector4d v = Eigen::Vector4d::Zero();
+    v(1 + from) = 1;
+    v(1 + to) = -1;
+    return v;
+  };
+  if (count == 3) {
+    directions = {along(0, 1), along(0, 2)};
+  } else if (count == 2) {
+    int i = 0;
+    while (!in[i]) ++i;
+    int j = i + 1;
+    while (!in[j]) ++j;
+    directions = {along(i, j)};
+  }
+  Eigen::Matrix<double, 4, Eigen::Dynamic> e(4, directions.size());
+  for (size_t k = 0; k < directions.size(); ++k) e.col(k) = directions[k];
+  return Envelope({&p, &a, &b, &c}, w, e);
+}
+
+DistanceDerivatives EdgeEdgeDerivatives(const Eigen::Vector3d& a0,
+                                        const Eigen::Vector3d& a1,
+                                        const Eigen::Vector3d& b0,
+                                        const Eigen::Vector3d& b1) {
+  const EdgeEdgeDistance closest = EdgeEdge(a0, a1, b0, b1);
+  const double s = closest.s, t = closest.t;
+  const Eigen::Vector4d w(1 - s, s, -(1 - t), -t);
+  bool free_s = s > kInterior && s < 1 - kInterior;
+  const bool free_t = t > kInterior && t < 1 - kInterior;
+  if (free_s && free_t) {
+    // Nearly parallel: the closest points slide along both edges together
+    // (g_yy singular); hold s, a point of one edge against the other.
+    const Eigen::Vector3d u = a1 - a0, v = b1 - b0;
+    const double sin2 = u.cross(v).squaredNorm() / (u.squaredNorm() * v.squaredNorm());
+    if (!(sin2 > 1e-10)) free_s = false;
+  }
+  Eigen::Matrix<double, 4, Eigen::Dynamic> e(4, int(free_s) + int(free_t));
+  int k = 0;
+  if (free_s) e.col(k++) = Eigen::Vector4d(-1, 1, 0, 0);
+  if (free_t) e.col(k++) = Eigen::Vector4d(0, 0, 1, -1);
+  return Envelope({&a0, &a1, &b0, &b1}, w, e);
 }
 
 }  // namespace drape

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 namespace drape {
 
 struct PointTriangleDistance {
@@ -37,5 +39,35 @@ EdgeEdgeDistance EdgeEdge(const Eigen::Vector3d& a0,
                           const Eigen::Vector3d& a1,
                           const Eigen::Vector3d& b0,
                           const Eigen::Vector3d& b1);
+
+}  // namespace drape
+
+namespace drape {
+
+// The squared distance of a point–triangle (x = p, a, b, c) or edge–edge
+// (x = a0, a1, b0, b1) pair as a function of its twelve coordinates, with
+// its gradient and Hessian, for a barrier on it. In each region (vertex,
+// edge, face; the edges' interiors or ends) the distance is min over the
+// closest point's parameters y of |r(x, y)|², so by the envelope theorem
+// ∇f = g_x and ∇²f = g_xx − g_xy g_yy⁻¹ g_yx at the minimiser. Exact within
+// a region; across a region's border the Hessian jumps (the gradient is
+// continuous). Nearly parallel edges make g_yy singular: their pairs need
+// the barrier's mollifier, and are evaluated here as a point against the
+// other edge.
+struct DistanceDerivatives {
+  double squared = 0;
+  Eigen::Matrix<double, 12, 1> gradient = Eigen::Matrix<double, 12, 1>::Zero();
+  Eigen::Matrix<double, 12, 12> hessian = Eigen::Matrix<double, 12, 12>::Zero();
+};
+
+DistanceDerivatives PointTriangleDerivatives(const Eigen::Vector3d& p,
+                                             const Eigen::Vector3d& a,
+                                             const Eigen::Vector3d& b,
+                                             const Eigen::Vector3d& c);
+
+DistanceDerivatives EdgeEdgeDerivatives(const Eigen::Vector3d& a0,
+                                        const Eigen::Vector3d& a1,
+                                        const Eigen::Vector3d& b0,
+                                        const Eigen::Vector3d& b1);
 
 }  // namespace drape

@@ -123,3 +123,100 @@ TEST(PrimitiveDistance, EdgeEdgeIsTheMinimumOverBothSegments) {
 
 }  // namespace
 }  // namespace drape
+
+namespace drape {
+namespace {
+
+using Coordinates = Eigen::Matrix<double, 12, 1>;
+using Derivatives = DistanceDerivatives (*)(const V3&, const V3&, const V3&, const V3&);
+
+DistanceDerivatives At(Derivatives f, const Coordinates& x) {
+  return f(x.segment<3>(0), x.segment<3>(3), x.segment<3>(6), x.segment<3>(9));
+}
+
+// Central differences of the value (against the gradient) and of the
+// gradient (against the Hessian), relative to their largest entries.
+void ExpectDerivativesMatchDifferences(Derivatives f, const Coordinates& x, const char* regime) {
+  const DistanceDerivatives d = At(f, x);
+  const double h = 1e-6;
+  Coordinates gradient;
+  Eigen::Matrix<double, 12, 12> hessian;
+  for (int k = 0; k < 12; ++k) {
+    Coordinates plus = x, minus = x;
+    plus(k) += h;
+    minus(k) -= h;
+    const DistanceDerivatives p = At(f, plus), m = At(f, minus);
+    gradient(k) = (p.squared - m.squared) / (2 * h);
+    hessian.col(k) = (p.gradient - m.gradient) / (2 * h);
+  }
+  EXPECT_LT((gradient - d.gradient).norm(), 1e-7 * std::max(1.0, d.gradient.norm())) << regime;
+  EXPECT_LT((hessian - d.hessian).norm(), 1e-6 * std::max(1.0, d.hessian.norm())) << regime;
+  EXPECT_LT((d.hessian - d.hessian.transpose()).norm(), 1e-12 * std::max(1.0, d.hessian.norm()))
+      << regime;
+}
+
+Coordinates Stack(const V3& a, const V3& b, const V3& c, const V3& e) {
+  Coordinates x;
+  x << a, b, c, e;
+  return x;
+}
+
+TEST(PrimitiveDistance, PointTriangleDerivativesInEveryRegion) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0.2, 0.8);
+  for (int trial = 0; trial < 20; ++trial) {
+    const V3 a = RandomPoint(rng), b = RandomPoint(rng), c = RandomPoint(rng);
+    const V3 n = (b - a).cross(c - a).normalized();
+    const double height = u(rng) * (trial % 2 ? 1 : -1);
+    // Face: above an interior point. Edge ab: beyond its middle, away from
+    // c. Vertex a: beyond a, away from the triangle.
+    const double s = u(rng) * 0.5, t = u(rng) * 0.4;
+    const V3 face = a + s * (b - a) + t * (c - a) + height * n;
+    const V3 outward_ab =
+        ((b - a).cross(n)).normalized() * ((b - a).cross(n).dot(c - a) > 0 ? -1.0 : 1.0);
+    const V3 edge = a + u(rng) * (b - a) + 0.5 * outward_ab + height * n;
+    const V3 vertex = a - 0.6 * ((b - a).normalized() + (c - a).normalized()) + height * n;
+    const PointTriangleDistance r = PointTriangle(edge, a, b, c);
+    ASSERT_GT(r.barycentric(0), 1e-3);
+    ASSERT_GT(r.barycentric(1), 1e-3);
+    ASSERT_EQ(r.barycentric(2), 0);
+    ASSERT_EQ(PointTriangle(vertex, a, b, c).barycentric, V3(1, 0, 0));
+    ExpectDerivativesMatchDifferences(PointTriangleDerivatives, Stack(face, a, b, c), "face");
+    ExpectDerivativesMatchDifferences(PointTriangleDerivatives, Stack(edge, a, b, c), "edge");
+    ExpectDerivativesMatchDifferences(PointTriangleDerivatives, Stack(vertex, a, b, c), "vertex");
+  }
+}
+
+TEST(PrimitiveDistance, EdgeEdgeDerivativesInEveryRegion) {
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> u(0.2, 0.8);
+  for (int trial = 0; trial < 20; ++trial) {
+    const V3 a0 = RandomPoint(rng), a1 = RandomPoint(rng);
+    const V3 m = a0 + u(rng) * (a1 - a0);
+    V3 side = (a1 - a0).cross(RandomPoint(rng)).normalized();
+    const V3 gap = (a1 - a0).cross(side).normalized() * u(rng);
+    // Interior of both: a segment through m + gap along `side`.
+    const V3 b0 = m + gap - 0.7 * side, b1 = m + gap + 0.9 * side;
+    // The end of one: segment c passes beside a1, beyond the end of a (its
+    // closest point 0.4 along it).
+    const V3 c0 = a1 + 0.3 * (a1 - a0).normalized() + gap - 0.4 * side, c1 = c0 + side;
+    // Both ends: b points away from a beyond a1.
+    const V3 d0 = a1 + 0.3 * (a1 - a0).normalized() + gap,
+             d1 = d0 + 0.8 * (a1 - a0).normalized() + 0.2 * side;
+    const EdgeEdgeDistance inner = EdgeEdge(a0, a1, b0, b1);
+    ASSERT_GT(inner.s, 1e-3);
+    ASSERT_LT(inner.s, 1 - 1e-3);
+    ASSERT_GT(inner.t, 1e-3);
+    ASSERT_LT(inner.t, 1 - 1e-3);
+    ASSERT_EQ(EdgeEdge(a0, a1, c0, c1).s, 1);
+    ASSERT_NEAR(EdgeEdge(a0, a1, c0, c1).t, 0.4, 1e-9);
+    ASSERT_EQ(EdgeEdge(a0, a1, d0, d1).s, 1);
+    ASSERT_EQ(EdgeEdge(a0, a1, d0, d1).t, 0);
+    ExpectDerivativesMatchDifferences(EdgeEdgeDerivatives, Stack(a0, a1, b0, b1), "interior");
+    ExpectDerivativesMatchDifferences(EdgeEdgeDerivatives, Stack(a0, a1, c0, c1), "one end");
+    ExpectDerivativesMatchDifferences(EdgeEdgeDerivatives, Stack(a0, a1, d0, d1), "both ends");
+  }
+}
+
+}  // namespace
+}  // namespace drape
