@@ -37,4 +37,26 @@ PairPotential BarrierPotential(const DistanceDerivatives& d,
                                double activation,
                                double stiffness);
 
+// The edge–edge mollifier (IPC, Li et al. 2020, §4.3): nearly parallel
+// edges (x = |e₀ × e₁|² below ε_x = 10⁻³ |e₀|²|e₁|² at rest) have a
+// distance whose closest points jump; m(x) = (2 − x/ε_x) x/ε_x takes their
+// barrier smoothly to zero as the edges turn parallel, where a point–
+// triangle pair of the same faces carries the contact instead.
+double MollifierThreshold(const Eigen::Vector3d& rest_a0,
+                          const Eigen::Vector3d& rest_a1,
+                          const Eigen::Vector3d& rest_b0,
+                          const Eigen::Vector3d& rest_b1);
+
+// m(x) κ b of an edge–edge pair (a0, a1), (b0, b1) with squared distance
+// derivatives `d` (EdgeEdgeDerivatives), and its gradient and Hessian.
+PairPotential MollifiedEdgeEdgePotential(const DistanceDerivatives& d,
+                                         const Eigen::Vector3d& a0,
+                                         const Eigen::Vector3d& a1,
+                                         const Eigen::Vector3d& b0,
+                                         const Eigen::Vector3d& b1,
+                                         double threshold,
+                                         double offset,
+                                         double activation,
+                                         double stiffness);
+
 }  // namespace drape

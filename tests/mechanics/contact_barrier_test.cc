@@ -107,5 +107,42 @@ TEST(ContactBarrier, PairPotentialDerivativesInsideTheBand) {
   EXPECT_EQ(At(PointTriangleDerivatives, far, offset, activation).gradient.norm(), 0);
 }
 
+// Nearly parallel edges (sin²θ ≈ 2.5e-5, far below the mollifier's 1e-3):
+// the mollified potential's gradient and Hessian against differences, and it
+// vanishes as the edges turn parallel.
+TEST(ContactBarrier, MollifiedEdgeEdgePotentialNearParallel) {
+  const double offset = 5e-4, activation = 2.5e-4, gap = 6e-4;
+  const V3 a0(0, 0, 0), a1(5e-3, 0, 0);
+  const double threshold = MollifierThreshold(a0, a1, a0, a1);
+  auto potential = [&](const Coordinates& x) {
+    const V3 p0 = x.segment<3>(0), p1 = x.segment<3>(3), q0 = x.segment<3>(6), q1 = x.segment<3>(9);
+    return MollifiedEdgeEdgePotential(
+        EdgeEdgeDerivatives(p0, p1, q0, q1), p0, p1, q0, q1, threshold, offset, activation, 1e3);
+  };
+  const Coordinates x = Stack(a0, a1, V3(1e-3, 1e-5, gap), V3(4e-3, -1e-5, gap));
+  const PairPotential p = potential(x);
+  ASSERT_GT(p.energy, 0);
+  const double h = 1e-10;
+  Coordinates gradient;
+  Eigen::Matrix<double, 12, 12> hessian;
+  for (int k = 0; k < 12; ++k) {
+    Coordinates plus = x, minus = x;
+    plus(k) += h;
+    minus(k) -= h;
+    gradient(k) = (potential(plus).energy - potential(minus).energy) / (2 * h);
+    hessian.col(k) = (potential(plus).gradient - potential(minus).gradient) / (2 * h);
+  }
+  EXPECT_LT((gradient - p.gradient).norm(), 1e-5 * p.gradient.norm());
+  EXPECT_LT((hessian - p.hessian).norm(), 1e-4 * p.hessian.norm());
+  // Unmollified, the same pair has more energy; exactly parallel, none.
+  const PairPotential bare =
+      BarrierPotential(EdgeEdgeDerivatives(a0, a1, V3(1e-3, 1e-5, gap), V3(4e-3, -1e-5, gap)),
+                       offset,
+                       activation,
+                       1e3);
+  EXPECT_LT(p.energy, bare.energy);
+  EXPECT_EQ(potential(Stack(a0, a1, V3(1e-3, 0, gap), V3(4e-3, 0, gap))).energy, 0);
+}
+
 }  // namespace
 }  // namespace drape
