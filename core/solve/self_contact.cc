@@ -1,0 +1,114 @@
+#include "core/solve/self_contact.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/mechanics/additive_ccd.h"
+#include "core/mechanics/contact_barrier.h"
+#include "core/mechanics/primitive_distance.h"
+
+namespace drape {
+namespace {
+
+Eigen::Vector3d Row(const Positions& x, int i) {
+  return x.row(i).transpose();
+}
+
+}  // namespace
+
+SelfContact::SelfContact(const Mesh& mesh, const SelfContactSettings& settings)
+    : settings_(settings), proximity_(mesh, settings.exclusion), rest_(mesh.positions) {}
+
+SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessian) const {
+  SelfContactEvaluation out;
+  out.gradient = Eigen::VectorXd::Zero(3 * x.rows());
+  const double reach = settings_.offset + settings_.activation;
+  const ProximityPairs pairs = proximity_.Candidates(x, reach);
+  auto add =
+      [&](const std::array<int, 4>& nodes, const DistanceDerivatives& d, const PairPotential& p) {
+        out.smallest_distance = std::min(out.smallest_distance, std::sqrt(d.squared));
+        if (p.energy == 0) return;
+        ++out.active_pairs;
+        out.energy += p.energy;
+        for (int k = 0; k < 4; ++k)
+          out.gradient.segment<3>(3 * nodes[k]) += p.gradient.segment<3>(3 * k);
+        if (with_hessian) {
+          out.block_nodes.push_back(nodes);
+          out.blocks.push_back(p.hessian);
+        }
+      };
+  const auto& triangles = proximity_.triangles();
+  for (const auto& [i, t] : pairs.point_triangle) {
+    const auto& tri = triangles[t];
+    const DistanceDerivatives d =
+        PointTriangleDerivatives(Row(x, i), Row(x, tri[0]), Row(x, tri[1]), Row(x, tri[2]));
+    add({i, tri[0], tri[1], tri[2]},
+        d,
+        BarrierPotential(d, settings_.offset, settings_.activation, settings_.stiffness));
+  }
+  const auto& edges = proximity_.edges();
+  for (const auto& [a, b] : pairs.edge_edge) {
+    const auto& p = edges[a];
+    const auto& q = edges[b];
+    const Eigen::Vector3d a0 = Row(x, p[0]), a1 = Row(x, p[1]), b0 = Row(x, q[0]),
+                          b1 = Row(x, q[1]);
+    const DistanceDerivatives d = EdgeEdgeDerivatives(a0, a1, b0, b1);
+    const double threshold =
+        MollifierThreshold(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1]));
+    add({p[0], p[1], q[0], q[1]},
+        d,
+        MollifiedEdgeEdgePotential(d,
+                                   a0,
+                                   a1,
+                                   b0,
+                                   b1,
+                                   threshold,
+                                   settings_.offset,
+                                   settings_.activation,
+                                   settings_.stiffness));
+  }
+  return out;
+}
+
+double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
+  // Every pair that could come within the offset during the step: within
+  // the offset and band plus twice the largest motion.
+  const double motion = dx.rowwise().norm().maxCoeff();
+  const double reach = settings_.offset + settings_.activation + 2 * motion;
+  const ProximityPairs pairs = proximity_.Candidates(x, reach);
+  AccdSettings accd;
+  accd.offset = settings_.offset;
+  double t = 1;
+  const auto& triangles = proximity_.triangles();
+  for (const auto& [i, k] : pairs.point_triangle) {
+    const auto& tri = triangles[k];
+    t = std::min(t,
+                 PointTriangleStepBound(Row(x, i),
+                                        Row(x, tri[0]),
+                                        Row(x, tri[1]),
+                                        Row(x, tri[2]),
+                                        Row(dx, i),
+                                        Row(dx, tri[0]),
+                                        Row(dx, tri[1]),
+                                        Row(dx, tri[2]),
+                                        accd));
+  }
+  const auto& edges = proximity_.edges();
+  for (const auto& [a, b] : pairs.edge_edge) {
+    const auto& p = edges[a];
+    const auto& q = edges[b];
+    t = std::min(t,
+                 EdgeEdgeStepBound(Row(x, p[0]),
+                                   Row(x, p[1]),
+                                   Row(x, q[0]),
+                                   Row(x, q[1]),
+                                   Row(dx, p[0]),
+                                   Row(dx, p[1]),
+                                   Row(dx, q[0]),
+                                   Row(dx, q[1]),
+                                   accd));
+  }
+  return t;
+}
+
+}  // namespace drape
