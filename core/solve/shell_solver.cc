@@ -678,6 +678,11 @@ bool ShellSolver::Impl::RunSequenced(int index, const StageLoading& loading, Sta
     Stop(Termination::kCancelled, "cancelled in stage '" + stage.name + "' (on the coarse mesh)");
     return false;
   }
+  // What the coarse path met (a bifurcation switched, penetration short of
+  // its target) is part of this run's story.
+  for (const auto& w : path.warnings)
+    if (std::find(model.warnings.begin(), model.warnings.end(), w) == model.warnings.end())
+      summary.notes.push_back("on the coarse mesh: " + w);
   const auto [nx, ny] = *coarse_scene.fabric.mesh.elements;
   char where[160];
   std::snprintf(where,
