@@ -10,6 +10,7 @@
 #include <random>
 
 #include "core/mechanics/contact_barrier.h"
+#include "support/pair_differences.h"
 
 namespace drape {
 namespace {
@@ -59,17 +60,13 @@ void ExpectPotentialMatchesDifferences(Derivatives f,
                                        double activation) {
   const PairPotential p = At(f, x, offset, activation);
   ASSERT_GT(p.energy, 0);
-  const double h = 1e-9;
-  Coordinates gradient;
-  Eigen::Matrix<double, 12, 12> hessian;
-  for (int k = 0; k < 12; ++k) {
-    Coordinates plus = x, minus = x;
-    plus(k) += h;
-    minus(k) -= h;
-    const PairPotential a = At(f, plus, offset, activation), b = At(f, minus, offset, activation);
-    gradient(k) = (a.energy - b.energy) / (2 * h);
-    hessian.col(k) = (a.gradient - b.gradient) / (2 * h);
-  }
+  const auto [gradient, hessian] = test::CentralDifferences(
+      [&](const Coordinates& y) {
+        const PairPotential e = At(f, y, offset, activation);
+        return std::pair{e.energy, e.gradient};
+      },
+      x,
+      1e-9);
   EXPECT_LT((gradient - p.gradient).norm(), 1e-5 * p.gradient.norm());
   EXPECT_LT((hessian - p.hessian).norm(), 1e-4 * p.hessian.norm());
 }
@@ -122,16 +119,13 @@ TEST(ContactBarrier, MollifiedEdgeEdgePotentialNearParallel) {
   const Coordinates x = Stack(a0, a1, V3(1e-3, 1e-5, gap), V3(4e-3, -1e-5, gap));
   const PairPotential p = potential(x);
   ASSERT_GT(p.energy, 0);
-  const double h = 1e-10;
-  Coordinates gradient;
-  Eigen::Matrix<double, 12, 12> hessian;
-  for (int k = 0; k < 12; ++k) {
-    Coordinates plus = x, minus = x;
-    plus(k) += h;
-    minus(k) -= h;
-    gradient(k) = (potential(plus).energy - potential(minus).energy) / (2 * h);
-    hessian.col(k) = (potential(plus).gradient - potential(minus).gradient) / (2 * h);
-  }
+  const auto [gradient, hessian] = test::CentralDifferences(
+      [&](const Coordinates& y) {
+        const PairPotential e = potential(y);
+        return std::pair{e.energy, e.gradient};
+      },
+      x,
+      1e-10);
   EXPECT_LT((gradient - p.gradient).norm(), 1e-5 * p.gradient.norm());
   EXPECT_LT((hessian - p.hessian).norm(), 1e-4 * p.hessian.norm());
   // Unmollified, the same pair has more energy; exactly parallel, none.

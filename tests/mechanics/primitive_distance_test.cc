@@ -10,6 +10,7 @@
 #include <random>
 
 #include "core/mechanics/primitive_distance.h"
+#include "support/pair_differences.h"
 
 namespace drape {
 namespace {
@@ -138,17 +139,13 @@ DistanceDerivatives At(Derivatives f, const Coordinates& x) {
 // gradient (against the Hessian), relative to their largest entries.
 void ExpectDerivativesMatchDifferences(Derivatives f, const Coordinates& x, const char* regime) {
   const DistanceDerivatives d = At(f, x);
-  const double h = 1e-6;
-  Coordinates gradient;
-  Eigen::Matrix<double, 12, 12> hessian;
-  for (int k = 0; k < 12; ++k) {
-    Coordinates plus = x, minus = x;
-    plus(k) += h;
-    minus(k) -= h;
-    const DistanceDerivatives p = At(f, plus), m = At(f, minus);
-    gradient(k) = (p.squared - m.squared) / (2 * h);
-    hessian.col(k) = (p.gradient - m.gradient) / (2 * h);
-  }
+  const auto [gradient, hessian] = test::CentralDifferences(
+      [&](const Coordinates& y) {
+        const DistanceDerivatives e = At(f, y);
+        return std::pair{e.squared, e.gradient};
+      },
+      x,
+      1e-6);
   EXPECT_LT((gradient - d.gradient).norm(), 1e-7 * std::max(1.0, d.gradient.norm())) << regime;
   EXPECT_LT((hessian - d.hessian).norm(), 1e-6 * std::max(1.0, d.hessian.norm())) << regime;
   EXPECT_LT((d.hessian - d.hessian.transpose()).norm(), 1e-12 * std::max(1.0, d.hessian.norm()))
