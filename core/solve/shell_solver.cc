@@ -21,6 +21,7 @@
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/mesh_sequencing.h"
 #include "core/solve/newton_solver.h"
+#include "core/solve/self_proximity.h"
 #include "core/solve/node_contact.h"
 #include "core/solve/stage_loading.h"
 
@@ -216,6 +217,8 @@ struct ShellSolver::Impl {
   double stage_path_length = 0;  // Σ arc lengths accepted in the stage [m]
   // The mean element edge [m]: how far a nodal rotation moves its neighbours.
   double element_size = 0;
+  // Finds where the fabric's own parts come close (layers of a fold).
+  std::unique_ptr<SelfProximity> layers;
   // The reference surface's offsets from the flat plane (free DOFs at use):
   // decides the sign of a critical mode where both signs are stable.
   Eigen::VectorXd imperfection;
@@ -366,6 +369,16 @@ bool ShellSolver::Impl::Emit(int stage_index,
         std::max(summary.max_stabilization_force, step.contact->max_stabilization_force);
     last_stabilization_force = step.contact->max_stabilization_force;
     contact->Commit(state);
+  }
+  if (layers) {
+    const double d = layers->SmallestDistance(state.positions, 2 * model.thickness);
+    if (std::isfinite(d)) {
+      step.layer_distance = d;
+      if (d < summary.min_layer_distance) {
+        summary.min_layer_distance = d;
+        summary.min_layer_step = step.step;
+      }
+    }
   }
   step.state = state;
   step.elapsed_s = SecondsSince(start);
@@ -949,6 +962,10 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.released.assign(m.model.grippers.size(), false);
   m.last_negative_pivots = 0;
   m.element_size = MeanEdgeLength(m.model.mesh);
+  // Parts count as distinct layers when farther apart at rest than a few
+  // elements (a fold's hinge bends them close) and than ten thicknesses.
+  m.summary.layer_exclusion = std::max(4 * m.element_size, 10 * m.model.thickness);
+  m.layers = std::make_unique<SelfProximity>(m.model.mesh, m.summary.layer_exclusion);
   m.imperfection = Eigen::VectorXd::Zero(m.model.DofCount());
   for (int i = 0; i < m.model.NodeCount(); ++i)
     m.imperfection(kDofsPerNode * i + 2) = m.model.mesh.positions(i, 2) - m.scene.fabric.elevation;
@@ -967,6 +984,19 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
     m.Stop(Termination::kNumericalFailure, e.what());
   }
 
+  if (m.summary.min_layer_distance < m.model.thickness) {
+    char warning[400];
+    std::snprintf(warning,
+                  sizeof warning,
+                  "the fabric passes into itself: at step %d two of its parts (more than %.3g m "
+                  "apart at rest) are %.3g m apart, %.2f of its thickness; the solver does not "
+                  "keep layers apart yet (no self-contact)",
+                  m.summary.min_layer_step,
+                  m.summary.layer_exclusion,
+                  m.summary.min_layer_distance,
+                  m.summary.min_layer_distance / m.model.thickness);
+    m.summary.warnings.push_back(warning);
+  }
   if (m.summary.penetration_target_missed > 0) {
     char warning[400];
     std::snprintf(warning,

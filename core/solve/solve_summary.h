@@ -70,6 +70,13 @@ struct SolveSummary {
   double max_law_curvature = 0;
   double bending_valid_to = std::numeric_limits<double>::infinity();
 
+  // Layers of the fabric on each other (StepState::layer_distance): the
+  // closest over the run (∞ when no two parts came within twice the
+  // thickness), its step, and which parts count as distinct [m].
+  double min_layer_distance = std::numeric_limits<double>::infinity();
+  int min_layer_step = 0;
+  double layer_exclusion = 0;
+
   // Contact (scenes with obstacles; zero otherwise).
   double contact_penalty = 0;          // k per area used [N/m³]
   double max_penetration = 0;          // over every converged step [m]

@@ -103,6 +103,11 @@ struct StepState {
   std::vector<NamedVector> reactions;    // force each support and gripper exerts [N]
   std::vector<NamedVector> probes;       // probe positions [m]
   std::optional<ContactReport> contact;  // present when the scene has obstacles
+  // The smallest distance between the mid-surfaces of two parts of the
+  // fabric more than SolveSummary::layer_exclusion apart at rest, when two
+  // such parts come within twice the thickness of each other [m]: below the
+  // thickness, layers pass into each other.
+  std::optional<double> layer_distance;
   ShellState state;                      // the converged configuration
   // Set on the step where the path crossed a limit or bifurcation point
   // (also in SolveSummary::stability_events).

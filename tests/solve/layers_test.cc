@@ -1,0 +1,98 @@
+// The fabric's layers on each other (StepState::layer_distance): the strip
+// folded over without self-contact reports the smallest distance between its
+// layers — checked against testing every point–triangle and edge–edge pair
+// of its final state — and warns that they pass into each other; a drape
+// with no folds reports none.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/io/scene_reader.h"
+#include "core/mechanics/primitive_distance.h"
+#include "core/solve/shell_solver.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+struct LayerRun {
+  SolveSummary summary;
+  std::vector<std::optional<double>> distances;
+  ShellState last;
+};
+
+LayerRun Solve(const char* file) {
+  const Scene scene = ReadScene(test::ScenesDir() / file);
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  LayerRun run;
+  run.summary = solver.Solve({[&](const StepState& s) {
+    run.distances.push_back(s.layer_distance);
+    run.last = s.state;
+    return StepDecision::kContinue;
+  }});
+  return run;
+}
+
+// Every pair of the mid-surface (quads split along 0–2) more than
+// `exclusion` apart at rest, the smallest distance.
+double SmallestByEveryPair(const Mesh& mesh, const ShellState& state, double exclusion) {
+  auto x = [&](int i) -> Eigen::Vector3d { return state.positions.row(i).transpose(); };
+  auto rest = [&](int i) -> Eigen::Vector3d { return mesh.positions.row(i).transpose(); };
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<int, 2>> edges;
+  for (int e = 0; e < mesh.ElementCount(); ++e) {
+    const auto q = mesh.quads.row(e);
+    triangles.push_back({q(0), q(1), q(2)});
+    triangles.push_back({q(0), q(2), q(3)});
+    for (auto [a, b] : {std::pair{q(0), q(1)},
+                        std::pair{q(1), q(2)},
+                        std::pair{q(2), q(3)},
+                        std::pair{q(3), q(0)},
+                        std::pair{q(0), q(2)}})
+      edges.push_back({a, b});
+  }
+  double smallest = INFINITY;
+  for (int i = 0; i < mesh.NodeCount(); ++i)
+    for (const auto& t : triangles)
+      if (std::sqrt(PointTriangle(rest(i), rest(t[0]), rest(t[1]), rest(t[2])).squared) > exclusion)
+        smallest = std::min(smallest, PointTriangle(x(i), x(t[0]), x(t[1]), x(t[2])).squared);
+  for (size_t a = 0; a < edges.size(); ++a)
+    for (size_t b = a + 1; b < edges.size(); ++b) {
+      const auto &p = edges[a], &q = edges[b];
+      if (std::sqrt(EdgeEdge(rest(p[0]), rest(p[1]), rest(q[0]), rest(q[1])).squared) > exclusion)
+        smallest = std::min(smallest, EdgeEdge(x(p[0]), x(p[1]), x(q[0]), x(q[1])).squared);
+    }
+  return std::sqrt(smallest);
+}
+
+TEST(Layers, AFoldWithoutSelfContactReportsItsLayersPassingIntoEachOther) {
+  const LayerRun run = Solve("strip-fold-no-table.json");
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  const ShellModel model =
+      BuildShellModel(ReadScene(test::ScenesDir() / "strip-fold-no-table.json"));
+  ASSERT_TRUE(run.distances.back().has_value());
+  const double expected = SmallestByEveryPair(model.mesh, run.last, run.summary.layer_exclusion);
+  EXPECT_NEAR(*run.distances.back(), expected, 1e-12);
+  EXPECT_LT(expected, model.thickness);  // the layers cross: no self-contact yet
+  EXPECT_LE(run.summary.min_layer_distance, *run.distances.back());
+  bool warned = false;
+  for (const auto& w : run.summary.warnings)
+    warned |= w.find("passes into itself: at step " + std::to_string(run.summary.min_layer_step)) !=
+              std::string::npos;
+  EXPECT_TRUE(warned);
+  // Flat at the start: nothing reported.
+  EXPECT_FALSE(run.distances.front().has_value());
+}
+
+TEST(Layers, ADrapeWithoutFoldsReportsNone) {
+  const LayerRun run = Solve("block-drape.json");
+  ASSERT_TRUE(run.summary.IsComplete());
+  for (const auto& d : run.distances) EXPECT_FALSE(d.has_value());
+  EXPECT_EQ(run.summary.min_layer_distance, INFINITY);
+  for (const auto& w : run.summary.warnings)
+    EXPECT_EQ(w.find("passes into itself"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace drape
