@@ -607,7 +607,7 @@ Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
 }
 
 Contact SceneParser::ReadContact(const JsonCursor& c) {
-  c.ExpectObject({"penalty", "friction"});
+  c.ExpectObject({"penalty", "friction", "self", "thickness"});
   Contact contact;
   if (auto p = c.Find("penalty")) {
     if (p->value().is_string() && p->value().get<std::string>() == "auto")
@@ -619,6 +619,8 @@ Contact SceneParser::ReadContact(const JsonCursor& c) {
     contact.friction = f->Number();
     if (contact.friction < 0) f->Fail("a friction coefficient must not be negative");
   }
+  if (auto s = c.Find("self")) contact.self = s->Boolean();
+  if (auto t = c.Find("thickness")) contact.thickness = t->PositiveQuantity(dim::kLength);
   return contact;
 }
 

@@ -21,13 +21,18 @@ Eigen::VectorXd ArcLengthStepper::Translations(const Eigen::VectorXd& free) cons
   return free.cwiseProduct(translation_mask_);
 }
 
-double ArcLengthStepper::Correct(const Eigen::VectorXd& correction,
-                                 double delta,
+double ArcLengthStepper::Correct(Eigen::VectorXd& correction,
+                                 double& delta,
                                  ShellState& state,
                                  double& lambda,
                                  Eigen::VectorXd& translations,
                                  double& lambda_increment) const {
-  const Eigen::VectorXd full = system_.dofs().Expand(correction);
+  Eigen::VectorXd full = system_.dofs().Expand(correction);
+  if (const double t = system_.StepBound(state, full); t < 1) {
+    full *= t;
+    correction *= t;
+    delta *= t;
+  }
   translations += Translations(correction);
   lambda_increment += delta;
   lambda += delta;
@@ -58,7 +63,9 @@ ContinuationStep ArcLengthStepper::StepTo(ShellState& state,
   system_.Factorize();
   const Eigen::VectorXd u_i = system_.Solve(f0);
   const double delta = target - lambda;
-  ApplyIncrement(dofs.Expand(delta * u_i), state);
+  Eigen::VectorXd predictor = dofs.Expand(delta * u_i);
+  if (const double t = system_.StepBound(state, predictor); t < 1) predictor *= t;
+  ApplyIncrement(predictor, state);
   loading_.Place(target, state);
   NewtonSettings settings = newton_;
   settings.residual_reference = std::abs(delta) * f0.norm();
@@ -100,7 +107,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   Eigen::VectorXd u_i = system_.Solve(f0);
   Eigen::VectorXd t_i = Translations(u_i);
   const double tangent_norm = std::sqrt(t_i.squaredNorm() + psi2);
-  const double ds = arc_length > 0 ? arc_length : first_increment * tangent_norm;
+  double ds = arc_length > 0 ? arc_length : first_increment * tangent_norm;
   double dl = ds / tangent_norm;
   // Forward: the side on which the tangent agrees with the last step.
   if (previous && previous->translation.dot(t_i) + psi2 * previous->lambda < 0) dl = -dl;
@@ -110,6 +117,12 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
     return landing;
   }
 
+  // A predictor that would pass through the fabric's own layers is
+  // shortened, and the step with it.
+  if (const double t = system_.StepBound(state, dofs.Expand(dl * u_i)); t < 1) {
+    ds *= t;
+    dl *= t;
+  }
   ContinuationStep out;
   out.arc_length = ds;
   out.iterations = 1;                   // the predictor's solve, as the paper counts it
@@ -190,7 +203,8 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
       auto forward = [&](double x) { return a.dot(p + x * t_i) + psi2 * b * (b + x); };
       delta = forward(r1) >= forward(r2) ? r1 : r2;
     }
-    last_correction = Correct(u_h + delta * u_i, delta, state, lambda, a, b);
+    Eigen::VectorXd correction = u_h + delta * u_i;
+    last_correction = Correct(correction, delta, state, lambda, a, b);
     ++out.iterations;
   }
 }
@@ -284,10 +298,10 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
     // (n·u_i = 0) λ cannot hold the hyperplane: keep it and let Δu_H do.
     const double along = n.dot(u_i);
     const double miss = amplitude - n.dot(q + u_h);
-    const double delta = std::abs(along) > 1e-12 * n.norm() * u_i.norm() ? miss / along : 0.0;
-    const Eigen::VectorXd correction = u_h + delta * u_i;
-    q += correction;
+    double delta = std::abs(along) > 1e-12 * n.norm() * u_i.norm() ? miss / along : 0.0;
+    Eigen::VectorXd correction = u_h + delta * u_i;
     last_correction = Correct(correction, delta, state, lambda, a, b);
+    q += correction;
     ++out.iterations;
   }
 }

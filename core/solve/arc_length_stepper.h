@@ -98,10 +98,12 @@ class ArcLengthStepper {
   // Assembles at (state, λ); returns F₀ over the free DOFs.
   Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);
   Eigen::VectorXd Translations(const Eigen::VectorXd& free) const;
-  // Applies a corrector's (Δq, δλ): the state and its prescribed motion move
-  // on, the step's accumulated translations and Δλ grow. Returns max|Δu|.
-  double Correct(const Eigen::VectorXd& correction,
-                 double delta,
+  // Applies a corrector's (Δq, δλ), both first cut to the part that keeps
+  // the fabric's layers apart (EquilibriumSystem::StepBound): the state and
+  // its prescribed motion move on, the step's accumulated translations and
+  // Δλ grow. Returns max|Δu|.
+  double Correct(Eigen::VectorXd& correction,
+                 double& delta,
                  ShellState& state,
                  double& lambda,
                  Eigen::VectorXd& translations,

@@ -17,8 +17,17 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 EquilibriumSystem::EquilibriumSystem(const ShellModel& model,
                                      const DofMap& dofs,
                                      const NodeContact* contact)
-    : dofs_(dofs), contact_(contact), assembler_(model, dofs), tangent_(assembler_.Pattern()) {
+    : model_(model), dofs_(dofs), contact_(contact) {
   internal_.setZero(model.DofCount());
+  BuildPattern();
+}
+
+void EquilibriumSystem::BuildPattern() {
+  const ShellModel& model = model_;
+  const DofMap& dofs = dofs_;
+  assembler_ = std::make_unique<ShellAssembler>(model, dofs, coupled_);
+  tangent_ = assembler_->Pattern();
+  factorized_valid_ = false;
   if (dofs.FreeCount() > 0) cholesky_.Analyze(tangent_);
   // Per stored entry (row r, column c of the upper triangle), how many of
   // its two DOFs (one on the diagonal) are translations and how many
@@ -77,11 +86,74 @@ double EquilibriumSystem::Assemble(const ShellState& state,
                                    bool with_tangent,
                                    const Eigen::VectorXd* velocity) {
   const auto start = std::chrono::steady_clock::now();
-  const double energy = assembler_.Assemble(
-      state, internal_, with_tangent ? &tangent_ : nullptr, velocity, velocity ? &rate_ : nullptr);
-  if (contact_) AddContact(state, with_tangent, velocity);
+  double energy = 0;
+  // At most twice: once more when the self-contact grew the pattern.
+  for (int pass = 0; pass < 2; ++pass) {
+    energy = assembler_->Assemble(state,
+                                  internal_,
+                                  with_tangent ? &tangent_ : nullptr,
+                                  velocity,
+                                  velocity ? &rate_ : nullptr);
+    if (contact_) AddContact(state, with_tangent, velocity);
+    if (!self_contact_ || AddSelfContact(state, with_tangent, energy)) break;
+  }
   timers_.assembly_s += SecondsSince(start);
   return energy;
+}
+
+bool EquilibriumSystem::AddSelfContact(const ShellState& state, bool with_tangent, double& energy) {
+  const SelfContactEvaluation e = self_contact_->Evaluate(state.positions, with_tangent);
+  energy += e.energy;
+  for (int i = 0; i < model_.NodeCount(); ++i)
+    internal_.segment<3>(kDofsPerNode * i) += e.gradient.segment<3>(3 * i);
+  if (!with_tangent) return true;
+  const int* outer = tangent_.outerIndexPtr();
+  const int* inner = tangent_.innerIndexPtr();
+  double* values = tangent_.valuePtr();
+  std::vector<std::pair<int, int>> missing;
+  // Upper-triangle entries (r ≤ c) of each 12 × 12 block, by free DOF.
+  auto scatter = [&](size_t b, bool write) {
+    const auto& nodes = e.block_nodes[b];
+    for (int k = 0; k < 4; ++k)
+      for (int l = 0; l < 4; ++l)
+        for (int p = 0; p < 3; ++p)
+          for (int q = 0; q < 3; ++q) {
+            const int r = dofs_.Free(kDofsPerNode * nodes[k] + p);
+            const int c = dofs_.Free(kDofsPerNode * nodes[l] + q);
+            if (r < 0 || c < 0 || r > c) continue;
+            const int* at = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
+            if (at == inner + outer[c + 1] || *at != r) {
+              missing.emplace_back(std::min(nodes[k], nodes[l]), std::max(nodes[k], nodes[l]));
+              continue;
+            }
+            if (write) values[at - inner] += e.blocks[b](3 * k + p, 3 * l + q);
+          }
+  };
+  for (size_t b = 0; b < e.blocks.size(); ++b) scatter(b, false);
+  if (!missing.empty()) {
+    // Couple every pair within three times the barrier's reach, so that the
+    // pattern (and its analysis) lasts while the layers move.
+    const SelfContactSettings& s = self_contact_->settings();
+    for (const auto& pair :
+         self_contact_->NodePairs(state.positions, 3 * (s.offset + s.activation)))
+      missing.push_back(pair);
+    coupled_.insert(coupled_.end(), missing.begin(), missing.end());
+    std::sort(coupled_.begin(), coupled_.end());
+    coupled_.erase(std::unique(coupled_.begin(), coupled_.end()), coupled_.end());
+    BuildPattern();
+    return false;
+  }
+  for (size_t b = 0; b < e.blocks.size(); ++b) scatter(b, true);
+  return true;
+}
+
+double EquilibriumSystem::StepBound(const ShellState& state,
+                                    const Eigen::VectorXd& increment) const {
+  if (!self_contact_) return 1.0;
+  Positions dx(model_.NodeCount(), 3);
+  for (int i = 0; i < model_.NodeCount(); ++i)
+    dx.row(i) = increment.segment<3>(kDofsPerNode * i).transpose();
+  return self_contact_->StepBound(state.positions, dx);
 }
 
 Eigen::VectorXd EquilibriumSystem::ObstacleForceRate(

@@ -6,8 +6,13 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <memory>
+#include <utility>
+#include <vector>
+
 #include "core/solve/dof_map.h"
 #include "core/solve/node_contact.h"
+#include "core/solve/self_contact.h"
 #include "core/solve/shell_assembler.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/sparse_cholesky.h"
@@ -40,6 +45,16 @@ class EquilibriumSystem {
   EquilibriumSystem(const ShellModel& model,
                     const DofMap& dofs,
                     const NodeContact* contact = nullptr);
+
+  // Self-contact between the fabric's layers (may be null; must outlive the
+  // system): its barrier joins the energy, force and tangent, whose pattern
+  // grows (and is analysed again) when layers come within reach of parts it
+  // does not couple yet.
+  void SetSelfContact(const SelfContact* self_contact) { self_contact_ = self_contact; }
+
+  // The largest fraction of a full increment (5 per node) that keeps the
+  // layers apart (1 without self-contact).
+  double StepBound(const ShellState& state, const Eigen::VectorXd& increment) const;
 
   // Assembles the internal force (and the tangent) at `state`; returns the
   // energy. With `velocity` (prescribed DOF rates, 5 per node) and the
@@ -77,14 +92,22 @@ class EquilibriumSystem {
 
   const DofMap& dofs() const { return dofs_; }
   const SystemTimers& timers() const { return timers_; }
-  int ColorCount() const { return assembler_.ColorCount(); }
+  int ColorCount() const { return assembler_->ColorCount(); }
 
  private:
   void AddContact(const ShellState& state, bool with_tangent, const Eigen::VectorXd* velocity);
+  // The pattern-dependent parts: assembler, tangent, analysis, slots.
+  void BuildPattern();
+  // Adds the self-contact barrier; false (nothing added to the tangent) when
+  // the pattern lacks a pair it needs, which it then grows.
+  bool AddSelfContact(const ShellState& state, bool with_tangent, double& energy);
 
+  const ShellModel& model_;
   const DofMap& dofs_;
   const NodeContact* contact_;
-  ShellAssembler assembler_;
+  const SelfContact* self_contact_ = nullptr;
+  std::vector<std::pair<int, int>> coupled_;  // node pairs the pattern couples beyond elements
+  std::unique_ptr<ShellAssembler> assembler_;
   // Per node, the tangent's slots of the upper triangle of its 3×3
   // translational block (row-major pairs a ≤ b; −1 where a DOF is fixed).
   std::vector<std::array<int, 6>> block_slots_;

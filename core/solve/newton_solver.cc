@@ -111,7 +111,10 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
       return out;
     }
     system.Factorize();
-    const Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-r));
+    Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-r));
+    // Never through the fabric itself: the part of the step that keeps its
+    // layers apart (self-contact; the whole step otherwise).
+    if (const double t = system.StepBound(state, correction); t < 1) correction *= t;
     ApplyIncrement(correction, state);
     ++out.iterations;
     last_correction = MaxTranslation(correction);

@@ -70,6 +70,27 @@ SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessia
   return out;
 }
 
+std::vector<std::pair<int, int>> SelfContact::NodePairs(const Positions& x, double reach) const {
+  const ProximityPairs pairs = proximity_.Candidates(x, reach);
+  std::vector<std::pair<int, int>> out;
+  auto add = [&](const std::array<int, 4>& n) {
+    for (int k = 0; k < 4; ++k)
+      for (int l = k + 1; l < 4; ++l)
+        if (n[k] != n[l]) out.emplace_back(std::min(n[k], n[l]), std::max(n[k], n[l]));
+  };
+  for (const auto& [i, t] : pairs.point_triangle) {
+    const auto& tri = proximity_.triangles()[t];
+    add({i, tri[0], tri[1], tri[2]});
+  }
+  for (const auto& [a, b] : pairs.edge_edge) {
+    const auto &p = proximity_.edges()[a], &q = proximity_.edges()[b];
+    add({p[0], p[1], q[0], q[1]});
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
   // Every pair that could come within the offset during the step: within
   // the offset and band plus twice the largest motion.

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "core/model/mesh.h"
@@ -42,6 +43,10 @@ class SelfContact {
   // The largest t ∈ [0, 1] such that x + τ dx keeps every pair outside the
   // offset for τ ≤ t (conservatively: it stops short).
   double StepBound(const Positions& x, const Positions& dx) const;
+
+  // The node pairs of every candidate pair within `reach` [m] (each pair
+  // once, smaller node first): what the tangent's pattern must couple.
+  std::vector<std::pair<int, int>> NodePairs(const Positions& x, double reach) const;
 
   const SelfContactSettings& settings() const { return settings_; }
 

@@ -33,7 +33,9 @@ int GlobalDof(const Mesh& mesh, int element, int local) {
 
 }  // namespace
 
-ShellAssembler::ShellAssembler(const ShellModel& model, const DofMap& dofs)
+ShellAssembler::ShellAssembler(const ShellModel& model,
+                               const DofMap& dofs,
+                               const std::vector<std::pair<int, int>>& coupled)
     : model_(model), dofs_(dofs) {
   const Mesh& mesh = model.mesh;
   std::vector<Eigen::Triplet<double>> entries;
@@ -42,6 +44,12 @@ ShellAssembler::ShellAssembler(const ShellModel& model, const DofMap& dofs)
     for (int a = 0; a < 20; ++a)
       for (int b = a; b < 20; ++b) {
         int fa = dofs.Free(GlobalDof(mesh, e, a)), fb = dofs.Free(GlobalDof(mesh, e, b));
+        if (fa >= 0 && fb >= 0) entries.emplace_back(std::min(fa, fb), std::max(fa, fb), 0.0);
+      }
+  for (const auto& [i, j] : coupled)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const int fa = dofs.Free(kDofsPerNode * i + a), fb = dofs.Free(kDofsPerNode * j + b);
         if (fa >= 0 && fb >= 0) entries.emplace_back(std::min(fa, fb), std::max(fa, fb), 0.0);
       }
   pattern_.resize(dofs.FreeCount(), dofs.FreeCount());

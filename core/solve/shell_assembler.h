@@ -9,6 +9,7 @@
 
 #include <Eigen/SparseCore>
 
+#include <utility>
 #include <vector>
 
 #include "core/solve/dof_map.h"
@@ -19,7 +20,11 @@ namespace drape {
 
 class ShellAssembler {
  public:
-  ShellAssembler(const ShellModel& model, const DofMap& dofs);
+  // `coupled`: node pairs beyond the elements' whose translations the
+  // tangent's pattern couples too (self-contact between layers).
+  ShellAssembler(const ShellModel& model,
+                 const DofMap& dofs,
+                 const std::vector<std::pair<int, int>>& coupled = {});
 
   // Energy [J]; `internal` (5 per node, all DOFs) receives ∂E/∂q; when
   // `tangent` is given (it must have Pattern()'s structure) its values are

@@ -21,8 +21,8 @@
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/mesh_sequencing.h"
 #include "core/solve/newton_solver.h"
-#include "core/solve/self_proximity.h"
 #include "core/solve/node_contact.h"
+#include "core/solve/self_proximity.h"
 #include "core/solve/stage_loading.h"
 
 namespace drape {
@@ -219,6 +219,8 @@ struct ShellSolver::Impl {
   double element_size = 0;
   // Finds where the fabric's own parts come close (layers of a fold).
   std::unique_ptr<SelfProximity> layers;
+  // Keeps them apart (scene contact.self), null otherwise.
+  std::unique_ptr<SelfContact> self_contact;
   // The reference surface's offsets from the flat plane (free DOFs at use):
   // decides the sign of a critical mode where both signs are stable.
   Eigen::VectorXd imperfection;
@@ -240,6 +242,7 @@ void ShellSolver::Impl::UseDofs(DofMap stage_dofs) {
   system.reset();
   dofs = std::make_unique<DofMap>(std::move(stage_dofs));
   system = std::make_unique<EquilibriumSystem>(model, *dofs, contact.get());
+  system->SetSelfContact(self_contact.get());
 }
 
 std::vector<HeldGripper> ShellSolver::Impl::Holds(const Stage& stage) const {
@@ -966,6 +969,21 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   // elements (a fold's hinge bends them close) and than ten thicknesses.
   m.summary.layer_exclusion = std::max(4 * m.element_size, 10 * m.model.thickness);
   m.layers = std::make_unique<SelfProximity>(m.model.mesh, m.summary.layer_exclusion);
+  m.self_contact.reset();
+  if (m.scene.contact && m.scene.contact->self) {
+    SelfContactSettings s;
+    s.offset = m.scene.contact->thickness.value_or(m.model.thickness);
+    s.activation = 0.5 * s.offset;
+    s.exclusion = m.summary.layer_exclusion;
+    // Stiffness: the barrier halfway into its band carries ten times a
+    // node's weight (its force there is κ·1.19ŝ·2(ξ + d̂/2), b'(ŝ/2) = −1.19ŝ);
+    // closer, the log barrier grows without bound.
+    const double s_hat = 2 * s.offset * s.activation + s.activation * s.activation;
+    const double node_weight = m.model.total_weight.norm() / std::max(1, m.model.NodeCount());
+    s.stiffness =
+        10 * std::max(node_weight, 1e-12) / (2.39 * s_hat * (s.offset + 0.5 * s.activation));
+    m.self_contact = std::make_unique<SelfContact>(m.model.mesh, s);
+  }
   m.imperfection = Eigen::VectorXd::Zero(m.model.DofCount());
   for (int i = 0; i < m.model.NodeCount(); ++i)
     m.imperfection(kDofsPerNode * i + 2) = m.model.mesh.positions(i, 2) - m.scene.fabric.elevation;
@@ -984,17 +1002,19 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
     m.Stop(Termination::kNumericalFailure, e.what());
   }
 
-  if (m.summary.min_layer_distance < m.model.thickness) {
+  if (m.summary.min_layer_distance <
+      (m.self_contact ? m.self_contact->settings().offset : m.model.thickness)) {
     char warning[400];
     std::snprintf(warning,
                   sizeof warning,
                   "the fabric passes into itself: at step %d two of its parts (more than %.3g m "
-                  "apart at rest) are %.3g m apart, %.2f of its thickness; the solver does not "
-                  "keep layers apart yet (no self-contact)",
+                  "apart at rest) are %.3g m apart, %.2f of its thickness%s",
                   m.summary.min_layer_step,
                   m.summary.layer_exclusion,
                   m.summary.min_layer_distance,
-                  m.summary.min_layer_distance / m.model.thickness);
+                  m.summary.min_layer_distance / m.model.thickness,
+                  m.self_contact ? " (closer than contact.thickness: held there by a gripper?)"
+                                 : "; contact.self keeps layers apart");
     m.summary.warnings.push_back(warning);
   }
   if (m.summary.penetration_target_missed > 0) {

@@ -108,7 +108,7 @@ struct StepState {
   // such parts come within twice the thickness of each other [m]: below the
   // thickness, layers pass into each other.
   std::optional<double> layer_distance;
-  ShellState state;                      // the converged configuration
+  ShellState state;  // the converged configuration
   // Set on the step where the path crossed a limit or bifurcation point
   // (also in SolveSummary::stability_events).
   std::optional<StabilityEvent> stability_event;

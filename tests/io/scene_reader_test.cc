@@ -55,6 +55,21 @@ TEST(SceneReader, SequencingMustDivideTheMeshOfOneWeightStage) {
             "each way");
 }
 
+TEST(SceneReader, SelfContactAndItsThickness) {
+  json doc = Minimal();
+  EXPECT_FALSE(SceneFromJson(doc).contact.has_value());
+  doc["contact"] = {{"self", true}, {"thickness", "0.4 mm"}};
+  const Scene scene = SceneFromJson(doc);
+  ASSERT_TRUE(scene.contact.has_value());
+  EXPECT_TRUE(scene.contact->self);
+  EXPECT_DOUBLE_EQ(*scene.contact->thickness, 4e-4);
+  EXPECT_EQ(SceneFromJson(json::parse(SceneToJson(scene).dump())), scene);
+  doc["contact"]["thickness"] = "-1 mm";
+  EXPECT_NE(ErrorOf(doc).find("contact.thickness"), std::string::npos) << ErrorOf(doc);
+  doc["contact"] = {{"self", "yes"}};
+  EXPECT_NE(ErrorOf(doc).find("contact.self"), std::string::npos) << ErrorOf(doc);
+}
+
 TEST(SceneReader, ReadsEveryExampleScene) {
   for (const auto& file : test::ExampleScenes()) {
     SCOPED_TRACE(file.string());

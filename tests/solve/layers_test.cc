@@ -22,8 +22,7 @@ struct LayerRun {
   ShellState last;
 };
 
-LayerRun Solve(const char* file) {
-  const Scene scene = ReadScene(test::ScenesDir() / file);
+LayerRun Solve(const Scene& scene) {
   ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
   LayerRun run;
   run.summary = solver.Solve({[&](const StepState& s) {
@@ -67,7 +66,7 @@ double SmallestByEveryPair(const Mesh& mesh, const ShellState& state, double exc
 }
 
 TEST(Layers, AFoldWithoutSelfContactReportsItsLayersPassingIntoEachOther) {
-  const LayerRun run = Solve("strip-fold-no-table.json");
+  const LayerRun run = Solve(ReadScene(test::ScenesDir() / "strip-fold-no-table.json"));
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   const ShellModel model =
       BuildShellModel(ReadScene(test::ScenesDir() / "strip-fold-no-table.json"));
@@ -86,12 +85,36 @@ TEST(Layers, AFoldWithoutSelfContactReportsItsLayersPassingIntoEachOther) {
 }
 
 TEST(Layers, ADrapeWithoutFoldsReportsNone) {
-  const LayerRun run = Solve("block-drape.json");
+  const LayerRun run = Solve(ReadScene(test::ScenesDir() / "block-drape.json"));
   ASSERT_TRUE(run.summary.IsComplete());
   for (const auto& d : run.distances) EXPECT_FALSE(d.has_value());
   EXPECT_EQ(run.summary.min_layer_distance, INFINITY);
   for (const auto& w : run.summary.warnings)
     EXPECT_EQ(w.find("passes into itself"), std::string::npos);
+}
+
+// With contact.self the same fold keeps its layers a thickness apart at
+// every step. Its gripper lands the end 1.25 h above the lower layer (the
+// shipped scene lands it at h, inside the barrier).
+TEST(Layers, SelfContactKeepsTheFoldsLayersAThicknessApart) {
+  Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  scene.contact = Contact{};
+  scene.contact->self = true;
+  const double h = scene.material.thickness;
+  auto& arc = std::get<ArcPath>(scene.stages.at(1).moves.at(0).path);
+  arc.center[2] = 0.625 * h;  // the end lands at twice the centre's height
+  const LayerRun run = Solve(scene);
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  int reported = 0;
+  for (const auto& d : run.distances)
+    if (d) {
+      ++reported;
+      EXPECT_GE(*d, 0.99 * h);
+    }
+  EXPECT_GT(reported, 10);  // the layers did come together
+  EXPECT_GE(run.summary.min_layer_distance, 0.99 * h);
+  for (const auto& w : run.summary.warnings)
+    EXPECT_EQ(w.find("passes into itself"), std::string::npos) << w;
 }
 
 }  // namespace
