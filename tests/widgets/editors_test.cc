@@ -13,6 +13,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
@@ -450,6 +451,16 @@ TEST_F(Widgets, ObstaclesAreAddedEditedAsJsonAndDraggedInTheView) {
       << panel->message().toStdString();
   EXPECT_FALSE(panel->setContact("2e8 N", "0.3"));  // not a penalty per area
   EXPECT_EQ(doc->scene().contact->friction, 0.3);
+  // Self-contact: a check box, undoable, and kept when the penalty changes.
+  EXPECT_FALSE(panel->selfContact()->isChecked());
+  panel->selfContact()->setChecked(true);
+  EXPECT_TRUE(doc->scene().contact->self);
+  ASSERT_TRUE(panel->setContact("auto", "0.2"));
+  EXPECT_TRUE(doc->scene().contact->self);
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  EXPECT_FALSE(doc->scene().contact->self);
+  EXPECT_FALSE(panel->selfContact()->isChecked());
 
   // Removing the table a stage does not move: allowed, and undone.
   panel->list()->setCurrentRow(0);

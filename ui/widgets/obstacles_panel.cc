@@ -1,5 +1,6 @@
 #include "ui/widgets/obstacles_panel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -59,6 +60,14 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   friction_->setToolTip("Coulomb coefficient μ, 0 for frictionless");
   contact->addRow("contact penalty", penalty_);
   contact->addRow("friction μ", friction_);
+  self_ = new QCheckBox("keep the fabric's layers a thickness apart", this);
+  self_->setToolTip(
+      "Self-contact (contact.self): where the fabric folds onto itself, a barrier keeps its "
+      "layers' mid-surfaces the material's thickness apart, and no step passes through");
+  contact->addRow("self-contact", self_);
+  connect(self_, &QCheckBox::toggled, this, [this](bool on) {
+    if (on != document_->scene().contact.value_or(Contact{}).self) setSelfContact(on);
+  });
   layout->addLayout(contact);
   for (QLineEdit* e : {penalty_, friction_})
     connect(e, &QLineEdit::editingFinished, this, [this] {
@@ -118,14 +127,24 @@ bool ObstaclesPanel::applyText(const QString& text) {
 
 bool ObstaclesPanel::setContact(const QString& penalty, const QString& friction) {
   nlohmann::json document = document_->json();
-  document["contact"] = {
-      {"penalty", penalty.trimmed() == "auto" ? nlohmann::json("auto") : TypedQuantity(penalty)},
-      {"friction", TypedQuantity(friction)}};
+  // The other contact keys (self-contact) stay as they are.
+  document["contact"]["penalty"] =
+      penalty.trimmed() == "auto" ? nlohmann::json("auto") : TypedQuantity(penalty);
+  document["contact"]["friction"] = TypedQuantity(friction);
   const bool done = ApplyOrSay(document_,
                                message_,
                                QString("contact: penalty %1, friction %2").arg(penalty, friction),
                                document);
   if (!done) refresh();  // the fields show the scene's values again
+  return done;
+}
+
+bool ObstaclesPanel::setSelfContact(bool on) {
+  nlohmann::json document = document_->json();
+  document["contact"]["self"] = on;
+  const bool done =
+      ApplyOrSay(document_, message_, on ? "self-contact on" : "self-contact off", document);
+  if (!done) refresh();
   return done;
 }
 
@@ -155,6 +174,10 @@ void ObstaclesPanel::refresh() {
   friction_shown_ = QString::number(contact.friction);
   penalty_->setText(penalty_shown_);
   friction_->setText(friction_shown_);
+  {
+    const QSignalBlocker block(self_);
+    self_->setChecked(contact.self);
+  }
   emit obstacleSelected(i);
 }
 

@@ -7,6 +7,7 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -35,6 +36,9 @@ class ObstaclesPanel : public QWidget {
   // How the fabric touches every obstacle: penalty k per area ("auto" or,
   // e.g., "1e8 N/m^3") and Coulomb friction μ.
   bool setContact(const QString& penalty, const QString& friction);
+  // Whether the fabric's layers are kept a thickness apart (contact.self).
+  bool setSelfContact(bool on);
+  QCheckBox* selfContact() const { return self_; }
 
  public slots:
   void refresh();
@@ -50,6 +54,7 @@ class ObstaclesPanel : public QWidget {
   QComboBox* kind_;
   QPlainTextEdit* text_;
   QLineEdit *penalty_, *friction_;
+  QCheckBox* self_;
   QString penalty_shown_, friction_shown_;  // as refresh() wrote them
   QLabel* message_;
 };
