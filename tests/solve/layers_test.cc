@@ -20,6 +20,7 @@ struct LayerRun {
   SolveSummary summary;
   std::vector<std::optional<double>> distances;
   ShellState last;
+  Eigen::Vector3d held_and_contact = Eigen::Vector3d::Zero();  // at the last step [N]
 };
 
 LayerRun Solve(const Scene& scene) {
@@ -28,6 +29,9 @@ LayerRun Solve(const Scene& scene) {
   run.summary = solver.Solve({[&](const StepState& s) {
     run.distances.push_back(s.layer_distance);
     run.last = s.state;
+    run.held_and_contact.setZero();
+    for (const auto& r : s.reactions) run.held_and_contact += r.value;
+    if (s.contact) run.held_and_contact += s.contact->force;
     return StepDecision::kContinue;
   }});
   return run;
@@ -115,6 +119,29 @@ TEST(Layers, SelfContactKeepsTheFoldsLayersAThicknessApart) {
   EXPECT_GE(run.summary.min_layer_distance, 0.99 * h);
   for (const auto& w : run.summary.warnings)
     EXPECT_EQ(w.find("passes into itself"), std::string::npos) << w;
+}
+
+// The shipped strip fold on its table with contact.self (gripper landing
+// 1.25 h above the lower layer): its layers stay a thickness apart at every
+// step, and at rest the support, gripper and table forces carry the weight
+// (the layers' forces on each other cancel).
+TEST(Layers, SelfContactOnTheTableKeepsLayersApartAndForcesInBalance) {
+  Scene scene = ReadScene(test::ScenesDir() / "strip-fold.json");
+  scene.contact->self = true;
+  const double h = scene.material.thickness;
+  std::get<ArcPath>(scene.stages.at(1).moves.at(0).path).center[2] = 0.625 * h;
+  const LayerRun run = Solve(scene);
+  ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
+  int reported = 0;
+  for (const auto& d : run.distances)
+    if (d) {
+      ++reported;
+      EXPECT_GE(*d, 0.99 * h);
+    }
+  EXPECT_GT(reported, 10);
+  const Eigen::Vector3d weight = BuildShellModel(scene).total_weight;
+  EXPECT_LT((run.held_and_contact + weight).norm(), 1e-6 * weight.norm())
+      << run.held_and_contact.transpose() << " against " << weight.transpose();
 }
 
 }  // namespace
