@@ -103,33 +103,39 @@ double EquilibriumSystem::Assemble(const ShellState& state,
 
 bool EquilibriumSystem::AddSelfContact(const ShellState& state, bool with_tangent, double& energy) {
   const SelfContactEvaluation e = self_contact_->Evaluate(state.positions, with_tangent);
+  self_contact_positions_ = state.positions;
+  self_contact_smallest_ = e.smallest_distance;
   energy += e.energy;
   for (int i = 0; i < model_.NodeCount(); ++i)
     internal_.segment<3>(kDofsPerNode * i) += e.gradient.segment<3>(3 * i);
   if (!with_tangent) return true;
   const int* outer = tangent_.outerIndexPtr();
   const int* inner = tangent_.innerIndexPtr();
-  double* values = tangent_.valuePtr();
+  // The slot of each upper-triangle entry (r ≤ c) of each 12 × 12 block, by
+  // free DOF; −1 where a DOF is fixed or the entry is in the lower triangle.
+  std::vector<int> slots(e.blocks.size() * 144, -1);
   std::vector<std::pair<int, int>> missing;
-  // Upper-triangle entries (r ≤ c) of each 12 × 12 block, by free DOF.
-  auto scatter = [&](size_t b, bool write) {
+  for (size_t b = 0; b < e.blocks.size(); ++b) {
     const auto& nodes = e.block_nodes[b];
     for (int k = 0; k < 4; ++k)
       for (int l = 0; l < 4; ++l)
-        for (int p = 0; p < 3; ++p)
-          for (int q = 0; q < 3; ++q) {
+        for (int q = 0; q < 3; ++q) {
+          const int c = dofs_.Free(kDofsPerNode * nodes[l] + q);
+          if (c < 0) continue;
+          const int* at = inner + outer[c];
+          for (int p = 0; p < 3; ++p) {
             const int r = dofs_.Free(kDofsPerNode * nodes[k] + p);
-            const int c = dofs_.Free(kDofsPerNode * nodes[l] + q);
-            if (r < 0 || c < 0 || r > c) continue;
-            const int* at = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
+            if (r < 0 || r > c) continue;
+            at = std::lower_bound(at, inner + outer[c + 1], r);
             if (at == inner + outer[c + 1] || *at != r) {
               missing.emplace_back(std::min(nodes[k], nodes[l]), std::max(nodes[k], nodes[l]));
+              at = inner + outer[c];
               continue;
             }
-            if (write) values[at - inner] += e.blocks[b](3 * k + p, 3 * l + q);
+            slots[144 * b + 12 * (3 * k + p) + 3 * l + q] = static_cast<int>(at - inner);
           }
-  };
-  for (size_t b = 0; b < e.blocks.size(); ++b) scatter(b, false);
+        }
+  }
   if (!missing.empty()) {
     // Couple every pair within three times the barrier's reach, so that the
     // pattern (and its analysis) lasts while the layers move.
@@ -143,7 +149,14 @@ bool EquilibriumSystem::AddSelfContact(const ShellState& state, bool with_tangen
     BuildPattern();
     return false;
   }
-  for (size_t b = 0; b < e.blocks.size(); ++b) scatter(b, true);
+  double* values = tangent_.valuePtr();
+  for (size_t b = 0; b < e.blocks.size(); ++b) {
+    const double* block = e.blocks[b].data();  // column-major: (i, j) at 12 j + i
+    const int* slot = &slots[144 * b];
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j)
+        if (slot[12 * i + j] >= 0) values[slot[12 * i + j]] += block[12 * j + i];
+  }
   return true;
 }
 
@@ -153,6 +166,15 @@ double EquilibriumSystem::StepBound(const ShellState& state,
   Positions dx(model_.NodeCount(), 3);
   for (int i = 0; i < model_.NodeCount(); ++i)
     dx.row(i) = increment.segment<3>(kDofsPerNode * i).transpose();
+  // No pair's distance changes by more than twice the largest motion: a
+  // step that closes at most 90 % of the smallest gap beyond the offset is
+  // whole (as the filter would find), without testing pairs.
+  if (self_contact_positions_.rows() == state.positions.rows() &&
+      self_contact_positions_ == state.positions) {
+    const SelfContactSettings& s = self_contact_->settings();
+    const double gap = std::min(self_contact_smallest_, s.offset + s.activation) - s.offset;
+    if (2 * dx.rowwise().norm().maxCoeff() < 0.9 * gap) return 1.0;
+  }
   return self_contact_->StepBound(state.positions, dx);
 }
 

@@ -107,6 +107,11 @@ class EquilibriumSystem {
   const NodeContact* contact_;
   const SelfContact* self_contact_ = nullptr;
   std::vector<std::pair<int, int>> coupled_;  // node pairs the pattern couples beyond elements
+  // Where the self-contact was last evaluated and the smallest distance it
+  // found there (+∞ beyond its reach): a step too short to close that gap
+  // needs no collision test.
+  Positions self_contact_positions_;
+  double self_contact_smallest_ = 0;
   std::unique_ptr<ShellAssembler> assembler_;
   // Per node, the tangent's slots of the upper triangle of its 3×3
   // translational block (row-major pairs a ≤ b; −1 where a DOF is fixed).

@@ -92,11 +92,9 @@ std::vector<std::pair<int, int>> SelfContact::NodePairs(const Positions& x, doub
 }
 
 double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
-  // Every pair that could come within the offset during the step: within
-  // the offset and band plus twice the largest motion.
-  const double motion = dx.rowwise().norm().maxCoeff();
-  const double reach = settings_.offset + settings_.activation + 2 * motion;
-  const ProximityPairs pairs = proximity_.Candidates(x, reach);
+  // Every pair that could come within the offset during the step: their
+  // boxes swept along the step come that close.
+  const ProximityPairs pairs = proximity_.SweptCandidates(x, dx, settings_.offset);
   AccdSettings accd;
   accd.offset = settings_.offset;
   double t = 1;

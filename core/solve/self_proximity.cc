@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 
 #include "core/mechanics/primitive_distance.h"
@@ -12,59 +11,163 @@ namespace drape {
 namespace {
 
 using V3 = Eigen::Vector3d;
+using A3 = Eigen::Array3d;
 
-// A uniform grid of cubes of side `cell`, hashed: each primitive is listed in
-// every cell its bounding box (grown by the reach) overlaps.
-class SpatialHash {
+// Axis-aligned boxes, one per primitive.
+struct Boxes {
+  std::vector<A3> lo, hi;
+  void Add(const A3& l, const A3& h) {
+    lo.push_back(l);
+    hi.push_back(h);
+  }
+};
+
+bool Overlap(const A3& alo, const A3& ahi, const A3& blo, const A3& bhi) {
+  return (alo <= bhi).all() && (blo <= ahi).all();
+}
+
+// The gap between two boxes (0 where they overlap).
+double BoxGap(const A3& alo, const A3& ahi, const A3& blo, const A3& bhi) {
+  return (blo - ahi).max(alo - bhi).max(0.0).matrix().norm();
+}
+
+// A uniform grid of cubes hashed into a table of buckets (Teschner et al.,
+// "Optimized spatial hashing for collision detection of deformable
+// objects", VMV 2003): each box is listed in the bucket of every cell it
+// overlaps, the buckets filled by counting, without sorting. Cells are as
+// large as the mean box, so that a box spans few; cells that share a bucket
+// only cost a box test.
+class BoxGrid {
  public:
-  explicit SpatialHash(double cell) : inverse_(1 / cell) {}
-
-  void Insert(int id, const V3& lo, const V3& hi) {
-    ForCells(lo, hi, [&](std::int64_t key) { cells_[key].push_back(id); });
+  explicit BoxGrid(const Boxes& listed) : listed_(listed) {
+    const size_t n = listed.lo.size();
+    double extent = 0;
+    for (size_t b = 0; b < n; ++b) extent += (listed.hi[b] - listed.lo[b]).maxCoeff();
+    inverse_ = 1 / std::max(extent / std::max<size_t>(1, n), 1e-12);
+    size_t buckets = 64;
+    while (buckets < 8 * n) buckets *= 2;
+    mask_ = buckets - 1;
+    start_.assign(buckets + 1, 0);
+    for (size_t b = 0; b < n; ++b)
+      ForBuckets(listed.lo[b], listed.hi[b], [&](size_t k) { ++start_[k + 1]; });
+    for (size_t k = 0; k < buckets; ++k) start_[k + 1] += start_[k];
+    ids_.resize(start_.back());
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    for (size_t b = 0; b < n; ++b)
+      ForBuckets(listed.lo[b], listed.hi[b], [&](size_t k) { ids_[fill[k]++] = int(b); });
   }
 
-  // Each id listed in a cell that [lo, hi] overlaps, once.
+  // Each listed box that overlaps [lo, hi], once per `query` (`stamp`
+  // remembers the last query that visited each box).
   template <typename Visit>
-  void Query(const V3& lo, const V3& hi, std::vector<int>& stamp, int query, Visit visit) const {
-    ForCells(lo, hi, [&](std::int64_t key) {
-      const auto it = cells_.find(key);
-      if (it == cells_.end()) return;
-      for (int id : it->second)
-        if (stamp[id] != query) {
-          stamp[id] = query;
-          visit(id);
-        }
+  void Query(const A3& lo, const A3& hi, std::vector<int>& stamp, int query, Visit visit) const {
+    ForBuckets(lo, hi, [&](size_t k) {
+      for (int i = start_[k]; i < start_[k + 1]; ++i) {
+        const int id = ids_[i];
+        if (stamp[id] == query) continue;
+        stamp[id] = query;
+        if (Overlap(lo, hi, listed_.lo[id], listed_.hi[id])) visit(id);
+      }
     });
   }
 
  private:
   template <typename F>
-  void ForCells(const V3& lo, const V3& hi, F f) const {
-    const Eigen::Vector3i a = (lo * inverse_).array().floor().cast<int>();
-    const Eigen::Vector3i b = (hi * inverse_).array().floor().cast<int>();
-    for (int i = a.x(); i <= b.x(); ++i)
-      for (int j = a.y(); j <= b.y(); ++j)
-        for (int k = a.z(); k <= b.z(); ++k)
-          f((std::int64_t(i) * 73856093) ^ (std::int64_t(j) * 19349663) ^
-            (std::int64_t(k) * 83492791));
+  void ForBuckets(const A3& lo, const A3& hi, F f) const {
+    if (!lo.allFinite() || !hi.allFinite()) return;
+    const Eigen::Array<std::int64_t, 3, 1> a = (lo * inverse_).floor().cast<std::int64_t>();
+    const Eigen::Array<std::int64_t, 3, 1> b = (hi * inverse_).floor().cast<std::int64_t>();
+    for (std::int64_t i = a.x(); i <= b.x(); ++i)
+      for (std::int64_t j = a.y(); j <= b.y(); ++j)
+        for (std::int64_t k = a.z(); k <= b.z(); ++k)
+          f(static_cast<size_t>((i * 73856093) ^ (j * 19349663) ^ (k * 83492791)) & mask_);
   }
 
-  double inverse_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+  const Boxes& listed_;
+  double inverse_ = 1;
+  size_t mask_ = 0;
+  std::vector<int> start_;  // bucket k holds ids_[start_[k], start_[k + 1])
+  std::vector<int> ids_;
 };
 
+// The box of a primitive's nodes in x and in x + motion (when given),
+// grown by `grow` on every side.
 template <size_t N>
-std::pair<V3, V3> Box(const std::array<int, N>& nodes, const Positions& x, double grow) {
-  V3 lo = x.row(nodes[0]).transpose(), hi = lo;
-  for (size_t k = 1; k < N; ++k) {
-    lo = lo.cwiseMin(x.row(nodes[k]).transpose());
-    hi = hi.cwiseMax(x.row(nodes[k]).transpose());
+std::pair<A3, A3> Box(const std::array<int, N>& nodes,
+                      const Positions& x,
+                      const Positions* motion,
+                      double grow) {
+  A3 lo = x.row(nodes[0]).transpose().array(), hi = lo;
+  for (size_t k = 0; k < N; ++k) {
+    const A3 p = x.row(nodes[k]).transpose().array();
+    lo = lo.min(p);
+    hi = hi.max(p);
+    if (motion) {
+      const A3 q = p + motion->row(nodes[k]).transpose().array();
+      lo = lo.min(q);
+      hi = hi.max(q);
+    }
   }
-  return {lo.array() - grow, hi.array() + grow};
+  return {lo - grow, hi + grow};
+}
+
+template <size_t N>
+Boxes BoxesOf(const std::vector<std::array<int, N>>& primitives,
+              const Positions& x,
+              const Positions* motion,
+              double grow) {
+  Boxes boxes;
+  boxes.lo.reserve(primitives.size());
+  boxes.hi.reserve(primitives.size());
+  for (const auto& p : primitives) {
+    const auto [lo, hi] = Box(p, x, motion, grow);
+    boxes.Add(lo, hi);
+  }
+  return boxes;
 }
 
 V3 Row(const Positions& x, int i) {
   return x.row(i).transpose();
+}
+
+// Point–triangle pairs whose boxes overlap (points' boxes against
+// triangles' boxes) and edge–edge pairs (each once), passed to `keep`.
+template <typename KeepPointTriangle, typename KeepEdgeEdge>
+ProximityPairs OverlappingPairs(const Boxes& points,
+                                const Boxes& triangles,
+                                const Boxes& edge_queries,
+                                const Boxes& edges,
+                                KeepPointTriangle keep_point_triangle,
+                                KeepEdgeEdge keep_edge_edge) {
+  ProximityPairs out;
+  {
+    const BoxGrid grid(triangles);
+    std::vector<int> stamp(triangles.lo.size(), -1);
+    for (int i = 0; i < static_cast<int>(points.lo.size()); ++i)
+      grid.Query(points.lo[i], points.hi[i], stamp, i, [&](int t) {
+        if (keep_point_triangle(i, t)) out.point_triangle.push_back({i, t});
+      });
+  }
+  {
+    const BoxGrid grid(edges);
+    std::vector<int> stamp(edges.lo.size(), -1);
+    for (int e = 0; e < static_cast<int>(edge_queries.lo.size()); ++e)
+      grid.Query(edge_queries.lo[e], edge_queries.hi[e], stamp, e, [&](int f) {
+        if (f > e && keep_edge_edge(e, f)) out.edge_edge.push_back({e, f});
+      });
+  }
+  std::sort(out.point_triangle.begin(), out.point_triangle.end());
+  std::sort(out.edge_edge.begin(), out.edge_edge.end());
+  return out;
+}
+
+Boxes NodeBoxes(const Positions& x, const Positions* motion) {
+  Boxes boxes;
+  for (int i = 0; i < x.rows(); ++i) {
+    const auto [lo, hi] = Box(std::array<int, 1>{i}, x, motion, 0.0);
+    boxes.Add(lo, hi);
+  }
+  return boxes;
 }
 
 }  // namespace
@@ -86,6 +189,36 @@ SelfProximity::SelfProximity(const Mesh& mesh, double exclusion)
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (const auto& [a, b] : edges) edges_.push_back({a, b});
+  for (const auto& t : triangles_) {
+    const auto [lo, hi] = Box(t, rest_, nullptr, 0.0);
+    rest_triangle_lo_.push_back(lo);
+    rest_triangle_hi_.push_back(hi);
+  }
+  for (const auto& e : edges_) {
+    const auto [lo, hi] = Box(e, rest_, nullptr, 0.0);
+    rest_edge_lo_.push_back(lo);
+    rest_edge_hi_.push_back(hi);
+  }
+}
+
+bool SelfProximity::PointTriangleApartAtRest(int node, int triangle) const {
+  const auto& t = triangles_[triangle];
+  if (node == t[0] || node == t[1] || node == t[2]) return false;
+  const A3 p = rest_.row(node).transpose().array();
+  if (BoxGap(p, p, rest_triangle_lo_[triangle], rest_triangle_hi_[triangle]) > exclusion_)
+    return true;
+  return PointTriangle(Row(rest_, node), Row(rest_, t[0]), Row(rest_, t[1]), Row(rest_, t[2]))
+             .squared > exclusion_ * exclusion_;
+}
+
+bool SelfProximity::EdgeEdgeApartAtRest(int a, int b) const {
+  const auto& p = edges_[a];
+  const auto& q = edges_[b];
+  if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) return false;
+  if (BoxGap(rest_edge_lo_[a], rest_edge_hi_[a], rest_edge_lo_[b], rest_edge_hi_[b]) > exclusion_)
+    return true;
+  return EdgeEdge(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1])).squared >
+         exclusion_ * exclusion_;
 }
 
 bool SelfProximity::PointTriangleCounts(int node,
@@ -96,8 +229,7 @@ bool SelfProximity::PointTriangleCounts(int node,
   if (node == t[0] || node == t[1] || node == t[2]) return false;
   if (PointTriangle(Row(x, node), Row(x, t[0]), Row(x, t[1]), Row(x, t[2])).squared > reach * reach)
     return false;
-  return PointTriangle(Row(rest_, node), Row(rest_, t[0]), Row(rest_, t[1]), Row(rest_, t[2]))
-             .squared > exclusion_ * exclusion_;
+  return PointTriangleApartAtRest(node, triangle);
 }
 
 bool SelfProximity::EdgeEdgeCounts(int a, int b, const Positions& x, double reach) const {
@@ -106,47 +238,54 @@ bool SelfProximity::EdgeEdgeCounts(int a, int b, const Positions& x, double reac
   if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) return false;
   if (EdgeEdge(Row(x, p[0]), Row(x, p[1]), Row(x, q[0]), Row(x, q[1])).squared > reach * reach)
     return false;
-  return EdgeEdge(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1])).squared >
-         exclusion_ * exclusion_;
+  return EdgeEdgeApartAtRest(a, b);
 }
 
 ProximityPairs SelfProximity::Candidates(const Positions& x, double reach) const {
+  if (x.rows() == 0) return {};
+  return OverlappingPairs(
+      NodeBoxes(x, nullptr),
+      BoxesOf(triangles_, x, nullptr, reach),
+      BoxesOf(edges_, x, nullptr, 0.0),
+      BoxesOf(edges_, x, nullptr, reach),
+      [&](int i, int t) { return PointTriangleCounts(i, t, x, reach); },
+      [&](int e, int f) { return EdgeEdgeCounts(e, f, x, reach); });
+}
+
+ProximityPairs SelfProximity::SweptCandidates(const Positions& x,
+                                              const Positions& motion,
+                                              double gap) const {
+  if (x.rows() == 0) return {};
+  return OverlappingPairs(
+      NodeBoxes(x, &motion),
+      BoxesOf(triangles_, x, &motion, gap),
+      BoxesOf(edges_, x, &motion, 0.0),
+      BoxesOf(edges_, x, &motion, gap),
+      [&](int i, int t) { return PointTriangleApartAtRest(i, t); },
+      [&](int e, int f) { return EdgeEdgeApartAtRest(e, f); });
+}
+
+ProximityPairs SelfProximity::SweptCandidatesByBruteForce(const Positions& x,
+                                                          const Positions& motion,
+                                                          double gap) const {
   ProximityPairs out;
-  if (x.rows() == 0) return out;
-  // Cells no smaller than the mean edge, so that a primitive spans few.
-  double mean_edge = 0;
-  for (const auto& e : edges_) mean_edge += (x.row(e[0]) - x.row(e[1])).norm();
-  mean_edge /= std::max<size_t>(1, edges_.size());
-  const double cell = std::max({reach, mean_edge, 1e-12});
-
-  SpatialHash triangles(cell);
-  for (size_t t = 0; t < triangles_.size(); ++t) {
-    const auto [lo, hi] = Box(triangles_[t], x, reach);
-    triangles.Insert(static_cast<int>(t), lo, hi);
-  }
-  std::vector<int> stamp(triangles_.size(), -1);
   for (int i = 0; i < x.rows(); ++i) {
-    const V3 p = Row(x, i);
-    triangles.Query(p, p, stamp, i, [&](int t) {
-      if (PointTriangleCounts(i, t, x, reach)) out.point_triangle.push_back({i, t});
-    });
+    const auto [plo, phi] = Box(std::array<int, 1>{i}, x, &motion, 0.0);
+    for (size_t t = 0; t < triangles_.size(); ++t) {
+      const auto [lo, hi] = Box(triangles_[t], x, &motion, gap);
+      if (Overlap(plo, phi, lo, hi) && PointTriangleApartAtRest(i, static_cast<int>(t)))
+        out.point_triangle.push_back({i, static_cast<int>(t)});
+    }
   }
-
-  SpatialHash edges(cell);
   for (size_t e = 0; e < edges_.size(); ++e) {
-    const auto [lo, hi] = Box(edges_[e], x, reach);
-    edges.Insert(static_cast<int>(e), lo, hi);
+    const auto [elo, ehi] = Box(edges_[e], x, &motion, 0.0);
+    for (size_t f = e + 1; f < edges_.size(); ++f) {
+      const auto [lo, hi] = Box(edges_[f], x, &motion, gap);
+      if (Overlap(elo, ehi, lo, hi) &&
+          EdgeEdgeApartAtRest(static_cast<int>(e), static_cast<int>(f)))
+        out.edge_edge.push_back({static_cast<int>(e), static_cast<int>(f)});
+    }
   }
-  stamp.assign(edges_.size(), -1);
-  for (size_t e = 0; e < edges_.size(); ++e) {
-    const auto [lo, hi] = Box(edges_[e], x, 0.0);
-    edges.Query(lo, hi, stamp, static_cast<int>(e), [&](int f) {
-      if (f > static_cast<int>(e) && EdgeEdgeCounts(static_cast<int>(e), f, x, reach))
-        out.edge_edge.push_back({static_cast<int>(e), f});
-    });
-  }
-  std::sort(out.point_triangle.begin(), out.point_triangle.end());
-  std::sort(out.edge_edge.begin(), out.edge_edge.end());
   return out;
 }
 

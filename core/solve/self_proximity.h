@@ -4,7 +4,7 @@
 // nodes. A point–triangle or edge–edge pair counts when its primitives lie
 // more than `exclusion` apart in the rest shape (neighbours in the fabric
 // never touch) and within `reach` of each other in the current state. Pairs
-// are found through a spatial hash of the state's positions.
+// are found through a spatial grid of the primitives' bounding boxes.
 #pragma once
 
 #include <Eigen/Core>
@@ -36,8 +36,18 @@ class SelfProximity {
   // +∞ when no pair is that close.
   double SmallestDistance(const Positions& positions, double reach) const;
 
-  // The same pairs by testing every one: for tests of the hash.
+  // Every pair whose boxes swept from `positions` to `positions + motion`
+  // come within `gap` [m] of each other: all that can come within `gap`
+  // during that motion (the broad phase of the step filter).
+  ProximityPairs SweptCandidates(const Positions& positions,
+                                 const Positions& motion,
+                                 double gap) const;
+
+  // The same pairs by testing every one: for tests of the grid.
   ProximityPairs CandidatesByBruteForce(const Positions& positions, double reach) const;
+  ProximityPairs SweptCandidatesByBruteForce(const Positions& positions,
+                                             const Positions& motion,
+                                             double gap) const;
 
   const std::vector<std::array<int, 3>>& triangles() const { return triangles_; }
   const std::vector<std::array<int, 2>>& edges() const { return edges_; }
@@ -45,11 +55,17 @@ class SelfProximity {
  private:
   bool PointTriangleCounts(int node, int triangle, const Positions& x, double reach) const;
   bool EdgeEdgeCounts(int a, int b, const Positions& x, double reach) const;
+  bool PointTriangleApartAtRest(int node, int triangle) const;
+  bool EdgeEdgeApartAtRest(int a, int b) const;
 
   Positions rest_;
   double exclusion_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<std::array<int, 2>> edges_;
+  // Rest-shape boxes: primitives whose boxes are farther apart than the
+  // exclusion count without the exact test.
+  std::vector<Eigen::Array3d> rest_triangle_lo_, rest_triangle_hi_;
+  std::vector<Eigen::Array3d> rest_edge_lo_, rest_edge_hi_;
 };
 
 }  // namespace drape

@@ -77,7 +77,35 @@ TEST(SelfProximity, HashFindsTheSamePairsAsTestingEveryPair) {
       const ProximityPairs brute = proximity.CandidatesByBruteForce(x, reach);
       EXPECT_EQ(hashed.point_triangle, brute.point_triangle) << trial << " " << reach;
       EXPECT_EQ(hashed.edge_edge, brute.edge_edge) << trial << " " << reach;
-      if (reach == 0.15) EXPECT_GT(brute.point_triangle.size(), 100u) << trial;
+      if (reach == 0.15) {
+        EXPECT_GT(brute.point_triangle.size(), 100u) << trial;
+      }
+    }
+  }
+}
+
+TEST(SelfProximity, SweptGridFindsTheSamePairsAsTestingEveryPair) {
+  const Mesh m = Grid(12, 8, 2, 1);
+  const SelfProximity proximity(m, 0.2);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 4; ++trial) {
+    const Positions x = FoldedFlat(m, 0.05);
+    // The upper layer pressed down and sheared, with noise: some primitives
+    // sweep far, some barely move.
+    Positions motion = Positions::Zero(x.rows(), 3);
+    for (int i = 0; i < x.rows(); ++i) {
+      if (m.positions(i, 0) > 1) motion.row(i) << 0.1 * trial * u(rng), 0.0, -0.03 * trial;
+      motion.row(i) += 0.005 * Eigen::RowVector3d(u(rng), u(rng), u(rng));
+    }
+    for (double gap : {0.002, 0.02}) {
+      const ProximityPairs gridded = proximity.SweptCandidates(x, motion, gap);
+      const ProximityPairs brute = proximity.SweptCandidatesByBruteForce(x, motion, gap);
+      EXPECT_EQ(gridded.point_triangle, brute.point_triangle) << trial << " " << gap;
+      EXPECT_EQ(gridded.edge_edge, brute.edge_edge) << trial << " " << gap;
+      if (trial > 1) {
+        EXPECT_GT(brute.point_triangle.size(), 100u) << trial;
+      }
     }
   }
 }

@@ -32,7 +32,8 @@ inline Scene FreeSheet(const SheetSpec& s) {
   scene.material.areal_weight = s.areal_weight;
   scene.material.membrane = IsotropicMembrane{s.youngs_modulus, s.poisson_ratio};
   scene.material.bending.warp = LinearBending{};
-  scene.contact = Contact{s.penalty, 0.0};
+  scene.contact = Contact{};
+  scene.contact->penalty = s.penalty;
   Stage stage;
   stage.name = "SW";
   stage.kind = StageKind::kGravity;
