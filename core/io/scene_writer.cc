@@ -218,7 +218,7 @@ nlohmann::ordered_json SceneToJson(const Scene& scene) {
   }
   if (scene.contact) {
     json contact{{"friction", scene.contact->friction}};
-    if (scene.contact->self) contact["self"] = true;
+    contact["self"] = scene.contact->self;
     if (scene.contact->thickness) contact["thickness"] = *scene.contact->thickness;
     if (scene.contact->penalty)
       contact["penalty"] = *scene.contact->penalty;

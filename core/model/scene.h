@@ -219,7 +219,7 @@ struct Contact {
   double friction = 0;            // Coulomb μ
   // Self-contact: the fabric's layers kept `thickness` apart (default the
   // material's) by a barrier (core/solve/self_contact.h).
-  bool self = false;
+  bool self = true;
   std::optional<double> thickness;  // [m]
   friend bool operator==(const Contact&, const Contact&) = default;
 };

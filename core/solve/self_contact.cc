@@ -17,13 +17,27 @@ Eigen::Vector3d Row(const Positions& x, int i) {
 }  // namespace
 
 SelfContact::SelfContact(const Mesh& mesh, const SelfContactSettings& settings)
-    : settings_(settings), proximity_(mesh, settings.exclusion), rest_(mesh.positions) {}
+    : settings_(settings),
+      list_margin_(2 * (settings.offset + settings.activation)),
+      proximity_(mesh, settings.exclusion),
+      rest_(mesh.positions) {}
+
+bool SelfContact::ListCovers(const Positions& x, double motion) const {
+  // A pair outside the list was farther than reach + margin apart where the
+  // list was made; its distance shrinks by at most twice any node's motion.
+  if (list_positions_.rows() != x.rows()) return false;
+  const double moved = (x - list_positions_).rowwise().norm().maxCoeff();
+  return 2 * (moved + motion) <= list_margin_;
+}
 
 SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessian) const {
   SelfContactEvaluation out;
   out.gradient = Eigen::VectorXd::Zero(3 * x.rows());
-  const double reach = settings_.offset + settings_.activation;
-  const ProximityPairs pairs = proximity_.Candidates(x, reach);
+  if (!ListCovers(x, 0)) {
+    list_ = proximity_.Candidates(x, settings_.offset + settings_.activation + list_margin_);
+    list_positions_ = x;
+  }
+  const ProximityPairs& pairs = list_;
   auto add =
       [&](const std::array<int, 4>& nodes, const DistanceDerivatives& d, const PairPotential& p) {
         out.smallest_distance = std::min(out.smallest_distance, std::sqrt(d.squared));
@@ -92,9 +106,11 @@ std::vector<std::pair<int, int>> SelfContact::NodePairs(const Positions& x, doub
 }
 
 double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
-  // Every pair that could come within the offset during the step: their
-  // boxes swept along the step come that close.
-  const ProximityPairs pairs = proximity_.SweptCandidates(x, dx, settings_.offset);
+  // Every pair that could come within the offset during the step: the
+  // list's, or those whose boxes swept along the step come that close.
+  const double motion = dx.rowwise().norm().maxCoeff();
+  const ProximityPairs pairs =
+      ListCovers(x, motion) ? list_ : proximity_.SweptCandidates(x, dx, settings_.offset);
   AccdSettings accd;
   accd.offset = settings_.offset;
   double t = 1;

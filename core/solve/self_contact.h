@@ -3,7 +3,11 @@
 // edge–edge pair of its mid-surface that is within reach and more than the
 // exclusion apart at rest (core/solve/self_proximity.h), acting on the
 // nodes' translations; and the collision-free fraction of a step
-// (core/mechanics/additive_ccd.h). Not yet part of the equilibrium system.
+// (core/mechanics/additive_ccd.h). The pairs within reach are kept in a
+// list of those within a wider radius (a Verlet list), searched again only
+// once some node has moved far enough since that a pair outside the list
+// could have come within reach: a part whose layers stay apart pays one
+// broad phase per few iterations, not per evaluation.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,14 +34,17 @@ struct SelfContactEvaluation {
   // ∂²E/∂x² as 12 × 12 blocks on four nodes each (a node may repeat).
   std::vector<std::array<int, 4>> block_nodes;
   std::vector<Eigen::Matrix<double, 12, 12>> blocks;
-  int active_pairs = 0;                 // pairs inside the barrier's band
-  double smallest_distance = INFINITY;  // among pairs within reach [m]
+  int active_pairs = 0;  // pairs inside the barrier's band
+  // The smallest distance among the pairs evaluated [m]; every other pair
+  // is farther apart than offset + activation.
+  double smallest_distance = INFINITY;
 };
 
 class SelfContact {
  public:
   SelfContact(const Mesh& mesh, const SelfContactSettings& settings);
 
+  // Not thread-safe: it updates the list of pairs.
   SelfContactEvaluation Evaluate(const Positions& x, bool with_hessian) const;
 
   // The largest t ∈ [0, 1] such that x + τ dx keeps every pair outside the
@@ -51,7 +58,14 @@ class SelfContact {
   const SelfContactSettings& settings() const { return settings_; }
 
  private:
+  // Whether the list still holds every pair that can come within reach
+  // when the nodes are at x and move up to `motion` [m] further.
+  bool ListCovers(const Positions& x, double motion) const;
+
   SelfContactSettings settings_;
+  double list_margin_;  // the list's radius beyond the reach [m]
+  mutable Positions list_positions_;
+  mutable ProximityPairs list_;
   SelfProximity proximity_;
   Positions rest_;
 };

@@ -970,9 +970,10 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.layer_exclusion = std::max(4 * m.element_size, 10 * m.model.thickness);
   m.layers = std::make_unique<SelfProximity>(m.model.mesh, m.summary.layer_exclusion);
   m.self_contact.reset();
-  if (m.scene.contact && m.scene.contact->self) {
+  if (!m.scene.contact || m.scene.contact->self) {
     SelfContactSettings s;
-    s.offset = m.scene.contact->thickness.value_or(m.model.thickness);
+    s.offset = m.scene.contact && m.scene.contact->thickness ? *m.scene.contact->thickness
+                                                             : m.model.thickness;
     s.activation = 0.5 * s.offset;
     s.exclusion = m.summary.layer_exclusion;
     // Stiffness: the barrier halfway into its band carries ten times a

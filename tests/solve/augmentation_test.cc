@@ -90,9 +90,12 @@ TEST(Augmentation, EveryStepMeetsItsTargetOrSaysWhatItReached) {
 // and are undone. The gripper's reaction is then recomputed independently
 // from the state the step reports (the gripped corner is in the air, so its
 // force is the shell's own, with no contact in it) and must agree to
-// round-off; the failed pass's last iterate differs by ~1e-5 of it.
+// round-off; the failed pass's last iterate differs by ~1e-5 of it. Without
+// self-contact, whose force on the corner as it lands the shell-only system
+// here does not hold.
 TEST(Augmentation, ReactionsAfterAnUndonePassAreThoseOfTheStateKept) {
-  const Scene scene = ReadScene(test::ScenesDir() / "diagonal-fold-linear.json");
+  Scene scene = ReadScene(test::ScenesDir() / "diagonal-fold-linear.json");
+  scene.contact->self = false;
   SolverOptions options = SolverOptions::FromScene(scene.solver);
   options.max_augmentation_iterations = 1;
   const Outcome run = Solve(scene, options);

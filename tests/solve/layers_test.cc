@@ -69,15 +69,24 @@ double SmallestByEveryPair(const Mesh& mesh, const ShellState& state, double exc
   return std::sqrt(smallest);
 }
 
+// The no-table fold with contact.self off and its end landing one thickness
+// above the lower layer (the arc's centre at h/2).
+Scene FoldWithoutSelfContact() {
+  Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  scene.contact = Contact{};
+  scene.contact->self = false;
+  std::get<ArcPath>(scene.stages.at(1).moves.at(0).path).center[2] = 0.5 * scene.material.thickness;
+  return scene;
+}
+
 TEST(Layers, AFoldWithoutSelfContactReportsItsLayersPassingIntoEachOther) {
-  const LayerRun run = Solve(ReadScene(test::ScenesDir() / "strip-fold-no-table.json"));
+  const LayerRun run = Solve(FoldWithoutSelfContact());
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
-  const ShellModel model =
-      BuildShellModel(ReadScene(test::ScenesDir() / "strip-fold-no-table.json"));
+  const ShellModel model = BuildShellModel(FoldWithoutSelfContact());
   ASSERT_TRUE(run.distances.back().has_value());
   const double expected = SmallestByEveryPair(model.mesh, run.last, run.summary.layer_exclusion);
   EXPECT_NEAR(*run.distances.back(), expected, 1e-12);
-  EXPECT_LT(expected, model.thickness);  // the layers cross: no self-contact yet
+  EXPECT_LT(expected, model.thickness);  // the layers cross
   EXPECT_LE(run.summary.min_layer_distance, *run.distances.back());
   bool warned = false;
   for (const auto& w : run.summary.warnings)
@@ -97,16 +106,14 @@ TEST(Layers, ADrapeWithoutFoldsReportsNone) {
     EXPECT_EQ(w.find("passes into itself"), std::string::npos);
 }
 
-// With contact.self the same fold keeps its layers a thickness apart at
-// every step. Its gripper lands the end 1.25 h above the lower layer (the
-// shipped scene lands it at h, inside the barrier).
+// As shipped (contact.self by default, the gripper landing the end 1.25 h
+// above the lower layer), the same fold keeps its layers a thickness apart
+// at every step.
 TEST(Layers, SelfContactKeepsTheFoldsLayersAThicknessApart) {
-  Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
-  scene.contact = Contact{};
-  scene.contact->self = true;
+  const Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
+  ASSERT_FALSE(scene.contact.has_value());  // self-contact is the default
   const double h = scene.material.thickness;
-  auto& arc = std::get<ArcPath>(scene.stages.at(1).moves.at(0).path);
-  arc.center[2] = 0.625 * h;  // the end lands at twice the centre's height
+  ASSERT_NEAR(std::get<ArcPath>(scene.stages.at(1).moves.at(0).path).center[2], 0.625 * h, 1e-15);
   const LayerRun run = Solve(scene);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   int reported = 0;
@@ -121,15 +128,14 @@ TEST(Layers, SelfContactKeepsTheFoldsLayersAThicknessApart) {
     EXPECT_EQ(w.find("passes into itself"), std::string::npos) << w;
 }
 
-// The shipped strip fold on its table with contact.self (gripper landing
+// The shipped strip fold on its table (self-contact on, the gripper landing
 // 1.25 h above the lower layer): its layers stay a thickness apart at every
 // step, and at rest the support, gripper and table forces carry the weight
 // (the layers' forces on each other cancel).
 TEST(Layers, SelfContactOnTheTableKeepsLayersApartAndForcesInBalance) {
-  Scene scene = ReadScene(test::ScenesDir() / "strip-fold.json");
-  scene.contact->self = true;
+  const Scene scene = ReadScene(test::ScenesDir() / "strip-fold.json");
+  ASSERT_TRUE(scene.contact->self);
   const double h = scene.material.thickness;
-  std::get<ArcPath>(scene.stages.at(1).moves.at(0).path).center[2] = 0.625 * h;
   const LayerRun run = Solve(scene);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   int reported = 0;

@@ -103,7 +103,7 @@ TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
   ASSERT_EQ(handles->count(), 3);           // centre, end, axis
   const Eigen::Vector3d start(-0.1, 0, 0);  // the left edge's centroid
   const Eigen::Vector3d c = handles->position(0);
-  EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.02345e-2)).norm(), 1e-12);
+  EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.625 * 0.0469e-2)).norm(), 1e-12);
   EXPECT_LT(
       (handles->position(1) - MotionAt(original.stages[1].moves[0].path, 1).Apply(start)).norm(),
       1e-12);
@@ -451,16 +451,17 @@ TEST_F(Widgets, ObstaclesAreAddedEditedAsJsonAndDraggedInTheView) {
       << panel->message().toStdString();
   EXPECT_FALSE(panel->setContact("2e8 N", "0.3"));  // not a penalty per area
   EXPECT_EQ(doc->scene().contact->friction, 0.3);
-  // Self-contact: a check box, undoable, and kept when the penalty changes.
-  EXPECT_FALSE(panel->selfContact()->isChecked());
-  panel->selfContact()->setChecked(true);
-  EXPECT_TRUE(doc->scene().contact->self);
-  ASSERT_TRUE(panel->setContact("auto", "0.2"));
-  EXPECT_TRUE(doc->scene().contact->self);
-  doc->undoStack()->undo();
-  doc->undoStack()->undo();
+  // Self-contact: a check box (on by default), undoable, and kept when the
+  // penalty changes.
+  EXPECT_TRUE(panel->selfContact()->isChecked());
+  panel->selfContact()->setChecked(false);
   EXPECT_FALSE(doc->scene().contact->self);
-  EXPECT_FALSE(panel->selfContact()->isChecked());
+  ASSERT_TRUE(panel->setContact("auto", "0.2"));
+  EXPECT_FALSE(doc->scene().contact->self);
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  EXPECT_TRUE(doc->scene().contact->self);
+  EXPECT_TRUE(panel->selfContact()->isChecked());
 
   // Removing the table a stage does not move: allowed, and undone.
   panel->list()->setCurrentRow(0);

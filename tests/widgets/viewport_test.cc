@@ -514,7 +514,7 @@ TEST_F(Widgets, StudioRunsAScriptAndWritesANonBlackScreenshot) {
   while (fgets(buf, sizeof buf, pipe)) out += buf;
   const int status = pclose(pipe);
   ASSERT_EQ(status, 0) << out;
-  EXPECT_NE(out.find("converged: 58 steps"), std::string::npos) << out;
+  EXPECT_NE(out.find("converged: 65 steps"), std::string::npos) << out;
   const QImage image(QString::fromStdString(shot));
   ASSERT_FALSE(image.isNull()) << shot;
   const int fabric = CountFabric(image);
