@@ -113,7 +113,10 @@ void ResultWriter::AddStep(const StepState& step) {
          {"law_curvature", step.law_curvature},
          {"reactions", Named(step.reactions)},
          {"probes", Named(step.probes)}};
-  if (step.layer_distance) s["layers"] = {{"min_distance", *step.layer_distance}};
+  if (step.layer_distance) {
+    s["layers"] = {{"min_distance", *step.layer_distance}};
+    if (step.layer_force) s["layers"]["force"] = *step.layer_force;
+  }
   if (step.contact) {
     s["contact"] = {{"nodes", step.contact->nodes},
                     {"force", Vector(step.contact->force)},

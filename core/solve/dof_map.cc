@@ -12,6 +12,11 @@ void DofMap::FixNode(int node, Fixity fixity) {
   Renumber();
 }
 
+void DofMap::FixDof(int dof) {
+  free_index_[dof] = -1;
+  Renumber();
+}
+
 void DofMap::Renumber() {
   free_count_ = 0;
   for (int& index : free_index_)

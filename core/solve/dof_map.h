@@ -18,6 +18,8 @@ class DofMap {
 
   // `position` fixes Δu; `clamp` fixes Δu and the rotation.
   void FixNode(int node, Fixity fixity);
+  // One DOF alone (e.g. a node held in one direction only).
+  void FixDof(int dof);
 
   int DofCount() const { return static_cast<int>(free_index_.size()); }
   int FreeCount() const { return free_count_; }

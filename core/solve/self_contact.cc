@@ -38,25 +38,32 @@ SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessia
     list_positions_ = x;
   }
   const ProximityPairs& pairs = list_;
-  auto add =
-      [&](const std::array<int, 4>& nodes, const DistanceDerivatives& d, const PairPotential& p) {
-        out.smallest_distance = std::min(out.smallest_distance, std::sqrt(d.squared));
-        if (p.energy == 0) return;
-        ++out.active_pairs;
-        out.energy += p.energy;
-        for (int k = 0; k < 4; ++k)
-          out.gradient.segment<3>(3 * nodes[k]) += p.gradient.segment<3>(3 * k);
-        if (with_hessian) {
-          out.block_nodes.push_back(nodes);
-          out.blocks.push_back(p.hessian);
-        }
-      };
+  // `side`: how many of the four nodes (the first) make one side of the pair.
+  auto add = [&](const std::array<int, 4>& nodes,
+                 int side,
+                 const DistanceDerivatives& d,
+                 const PairPotential& p) {
+    out.smallest_distance = std::min(out.smallest_distance, std::sqrt(d.squared));
+    if (p.energy == 0) return;
+    ++out.active_pairs;
+    out.energy += p.energy;
+    Eigen::Vector3d on_side = Eigen::Vector3d::Zero();
+    for (int k = 0; k < side; ++k) on_side += p.gradient.segment<3>(3 * k);
+    out.force += on_side.norm();
+    for (int k = 0; k < 4; ++k)
+      out.gradient.segment<3>(3 * nodes[k]) += p.gradient.segment<3>(3 * k);
+    if (with_hessian) {
+      out.block_nodes.push_back(nodes);
+      out.blocks.push_back(p.hessian);
+    }
+  };
   const auto& triangles = proximity_.triangles();
   for (const auto& [i, t] : pairs.point_triangle) {
     const auto& tri = triangles[t];
     const DistanceDerivatives d =
         PointTriangleDerivatives(Row(x, i), Row(x, tri[0]), Row(x, tri[1]), Row(x, tri[2]));
     add({i, tri[0], tri[1], tri[2]},
+        1,
         d,
         BarrierPotential(d, settings_.offset, settings_.activation, settings_.stiffness));
   }
@@ -70,6 +77,7 @@ SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessia
     const double threshold =
         MollifierThreshold(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1]));
     add({p[0], p[1], q[0], q[1]},
+        2,
         d,
         MollifiedEdgeEdgePotential(d,
                                    a0,

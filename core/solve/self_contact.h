@@ -35,6 +35,9 @@ struct SelfContactEvaluation {
   std::vector<std::array<int, 4>> block_nodes;
   std::vector<Eigen::Matrix<double, 12, 12>> blocks;
   int active_pairs = 0;  // pairs inside the barrier's band
+  // Σ over pairs of the force one side exerts on the other (on the point of
+  // a point–triangle pair, on the first edge of an edge–edge pair) [N].
+  double force = 0;
   // The smallest distance among the pairs evaluated [m]; every other pair
   // is farther apart than offset + activation.
   double smallest_distance = INFINITY;

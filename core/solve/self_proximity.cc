@@ -189,6 +189,15 @@ SelfProximity::SelfProximity(const Mesh& mesh, double exclusion)
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (const auto& [a, b] : edges) edges_.push_back({a, b});
+  // Connected pieces, by union–find over the edges.
+  piece_.resize(rest_.rows());
+  for (int i = 0; i < static_cast<int>(piece_.size()); ++i) piece_[i] = i;
+  auto root = [&](int i) {
+    while (piece_[i] != i) i = piece_[i] = piece_[piece_[i]];
+    return i;
+  };
+  for (const auto& e : edges_) piece_[root(e[0])] = root(e[1]);
+  for (int i = 0; i < static_cast<int>(piece_.size()); ++i) piece_[i] = root(i);
   for (const auto& t : triangles_) {
     const auto [lo, hi] = Box(t, rest_, nullptr, 0.0);
     rest_triangle_lo_.push_back(lo);
@@ -204,6 +213,7 @@ SelfProximity::SelfProximity(const Mesh& mesh, double exclusion)
 bool SelfProximity::PointTriangleApartAtRest(int node, int triangle) const {
   const auto& t = triangles_[triangle];
   if (node == t[0] || node == t[1] || node == t[2]) return false;
+  if (piece_[node] != piece_[t[0]]) return true;
   const A3 p = rest_.row(node).transpose().array();
   if (BoxGap(p, p, rest_triangle_lo_[triangle], rest_triangle_hi_[triangle]) > exclusion_)
     return true;
@@ -215,6 +225,7 @@ bool SelfProximity::EdgeEdgeApartAtRest(int a, int b) const {
   const auto& p = edges_[a];
   const auto& q = edges_[b];
   if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) return false;
+  if (piece_[p[0]] != piece_[q[0]]) return true;
   if (BoxGap(rest_edge_lo_[a], rest_edge_hi_[a], rest_edge_lo_[b], rest_edge_hi_[b]) > exclusion_)
     return true;
   return EdgeEdge(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1])).squared >

@@ -3,8 +3,8 @@
 // triangles (each quad split along its diagonal 0–2), their edges, and the
 // nodes. A point–triangle or edge–edge pair counts when its primitives lie
 // more than `exclusion` apart in the rest shape (neighbours in the fabric
-// never touch) and within `reach` of each other in the current state. Pairs
-// are found through a spatial grid of the primitives' bounding boxes.
+// never touch), or on separate pieces of the mesh (stacked sheets) and within `reach` of each other
+// in the current state. Pairs are found through a spatial grid of the primitives' bounding boxes.
 #pragma once
 
 #include <Eigen/Core>
@@ -59,6 +59,7 @@ class SelfProximity {
   bool EdgeEdgeApartAtRest(int a, int b) const;
 
   Positions rest_;
+  std::vector<int> piece_;  // per node, its connected piece of the mesh
   double exclusion_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<std::array<int, 2>> edges_;

@@ -377,6 +377,11 @@ bool ShellSolver::Impl::Emit(int stage_index,
     const double d = layers->SmallestDistance(state.positions, 2 * model.thickness);
     if (std::isfinite(d)) {
       step.layer_distance = d;
+      // Infinite only where held nodes alone put layers inside the offset.
+      if (const double f =
+              self_contact ? self_contact->Evaluate(state.positions, false).force : NAN;
+          std::isfinite(f))
+        step.layer_force = f;
       if (d < summary.min_layer_distance) {
         summary.min_layer_distance = d;
         summary.min_layer_step = step.step;

@@ -108,6 +108,9 @@ struct StepState {
   // such parts come within twice the thickness of each other [m]: below the
   // thickness, layers pass into each other.
   std::optional<double> layer_distance;
+  // With self-contact, the force the layers exert on each other then
+  // (SelfContactEvaluation::force) [N].
+  std::optional<double> layer_force;
   ShellState state;  // the converged configuration
   // Set on the step where the path crossed a limit or bifurcation point
   // (also in SolveSummary::stability_events).
