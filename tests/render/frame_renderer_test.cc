@@ -14,8 +14,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/io/scene_reader.h"
 #include "core/mechanics/director.h"
+#include "core/solve/shell_solver.h"
 #include "support/strip_scene.h"
+#include "support/test_paths.h"
 #include "ui/render/display.h"
 
 namespace drape {
@@ -219,6 +222,60 @@ TEST_F(FrameRendererTest, ObstaclesAndGrippersAreWhereTheSceneSays) {
   const auto [h_grip, s_grip] = HueSaturation(image.At(int(grip.x()), int(grip.y())));
   EXPECT_GT(s_grip, 0.5);
   EXPECT_TRUE(h_grip < 15 || h_grip > 345) << "hue " << h_grip;
+}
+
+// The shipped strip fold's last state seen from above: where the upper
+// layer lies on the lower, only its own face shows (the back, its underside
+// before the fold). Without self-contact the layers cross there and the
+// lower layer's front face shows through in stripes: the check can fail.
+int LowerFaceShowingThroughTheUpperLayer(bool self_contact) {
+  Scene scene = ReadScene(test::ScenesDir() / "strip-fold.json");
+  scene.contact->self = self_contact;
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  ShellState last;
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    last = s.state;
+    return StepDecision::kContinue;
+  }});
+  EXPECT_TRUE(summary.IsComplete()) << summary.FullReport();
+  const ShellModel model = BuildShellModel(scene);
+  // The flat part of the upper layer: nodes of the left half (before the
+  // fold) now within 3 h of the table, one element in from its ends.
+  double x0 = INFINITY, x1 = -INFINITY;
+  for (int i = 0; i < model.NodeCount(); ++i)
+    if (model.reference.positions(i, 0) < -0.03 && last.positions(i, 2) < 3 * model.thickness) {
+      x0 = std::min(x0, last.positions(i, 0));
+      x1 = std::max(x1, last.positions(i, 0));
+    }
+  EXPECT_GT(x1 - x0, 0.03);  // a few centimetres of it lie flat
+  x0 += 0.005;
+  x1 -= 0.005;
+  RenderOptions options = Bare(1000, 400);
+  options.camera.view = "top";
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&last}));
+  Frame frame;
+  frame.state = &last;
+  renderer.Show(frame);
+  const Image image{1000, 400, renderer.CaptureRgb()};
+  const Eigen::Vector2d a = Project(renderer, {x0, -0.008, 0});
+  const Eigen::Vector2d b = Project(renderer, {x1, 0.008, 0});
+  int pixels = 0, front = 0;
+  for (int y = static_cast<int>(std::min(a.y(), b.y())); y < std::max(a.y(), b.y()); ++y)
+    for (int x = static_cast<int>(std::min(a.x(), b.x())); x < std::max(a.x(), b.x()); ++x) {
+      ++pixels;
+      front += IsFabricFace(image.At(x, y));
+    }
+  std::printf("self-contact %s: %d of %d pixels over the upper layer show the lower one\n",
+              self_contact ? "on" : "off",
+              front,
+              pixels);
+  EXPECT_GT(pixels, 1000);
+  return front;
+}
+
+TEST_F(FrameRendererTest, FoldedLayersDrawWithoutZFighting) {
+  EXPECT_EQ(LowerFaceShowingThroughTheUpperLayer(true), 0);
+  EXPECT_GT(LowerFaceShowingThroughTheUpperLayer(false), 100);
 }
 
 }  // namespace
