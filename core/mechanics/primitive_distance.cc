@@ -111,9 +111,12 @@ namespace {
 // f = min_y |r(x, y)|², r = Σ_i w_i(y) x_i with w affine in y: w = w* + Σ_k
 // (y_k − y_k*) e_k over the free parameters (columns of `e`), at the
 // minimiser y* where w = `w`.
+// At most two free parameters: fixed-size storage, no allocation per pair.
+using FreeDirections = Eigen::Matrix<double, 4, Eigen::Dynamic, Eigen::ColMajor, 4, 2>;
+
 DistanceDerivatives Envelope(const std::array<const Eigen::Vector3d*, 4>& x,
                              const Eigen::Vector4d& w,
-                             const Eigen::Matrix<double, 4, Eigen::Dynamic>& e) {
+                             const FreeDirections& e) {
   DistanceDerivatives out;
   Eigen::Vector3d r = Eigen::Vector3d::Zero();
   for (int i = 0; i < 4; ++i) r += w(i) * *x[i];
@@ -125,13 +128,14 @@ DistanceDerivatives Envelope(const std::array<const Eigen::Vector3d*, 4>& x,
   }
   const int m = static_cast<int>(e.cols());
   if (m == 0) return out;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, m);  // ∂r/∂y_k
+  Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, 2> d(3, m);  // ∂r/∂y_k
   for (int k = 0; k < m; ++k) {
     d.col(k).setZero();
     for (int i = 0; i < 4; ++i) d.col(k) += e(i, k) * *x[i];
   }
-  const Eigen::MatrixXd g_yy = 2 * d.transpose() * d;
-  Eigen::Matrix<double, 12, Eigen::Dynamic> g_xy(12, m);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 2, 2> g_yy =
+      2 * d.transpose() * d;
+  Eigen::Matrix<double, 12, Eigen::Dynamic, Eigen::ColMajor, 12, 2> g_xy(12, m);
   for (int k = 0; k < m; ++k)
     for (int i = 0; i < 4; ++i) g_xy.block<3, 1>(3 * i, k) = 2 * (e(i, k) * r + w(i) * d.col(k));
   out.hessian -= g_xy * g_yy.ldlt().solve(g_xy.transpose());
@@ -153,7 +157,6 @@ DistanceDerivatives PointTriangleDerivatives(const Eigen::Vector3d& p,
   // vertices with a nonzero weight (two directions on the face, one on an
   // edge, none at a vertex). Moving weight from vertex i to vertex j changes
   // w by +1 at i, −1 at j (w holds −u).
-  std::vector<Eigen::Vector4d> directions;
   const bool in[3] = {u(0) > kInterior, u(1) > kInterior, u(2) > kInterior};
   const int count = in[0] + in[1] + in[2];
   auto along = [](int from, int to) {
@@ -162,17 +165,17 @@ DistanceDerivatives PointTriangleDerivatives(const Eigen::Vector3d& p,
     v(1 + to) = -1;
     return v;
   };
+  FreeDirections e(4, count == 3 ? 2 : count == 2 ? 1 : 0);
   if (count == 3) {
-    directions = {along(0, 1), along(0, 2)};
+    e.col(0) = along(0, 1);
+    e.col(1) = along(0, 2);
   } else if (count == 2) {
     int i = 0;
     while (!in[i]) ++i;
     int j = i + 1;
     while (!in[j]) ++j;
-    directions = {along(i, j)};
+    e.col(0) = along(i, j);
   }
-  Eigen::Matrix<double, 4, Eigen::Dynamic> e(4, directions.size());
-  for (size_t k = 0; k < directions.size(); ++k) e.col(k) = directions[k];
   return Envelope({&p, &a, &b, &c}, w, e);
 }
 
@@ -192,7 +195,7 @@ DistanceDerivatives EdgeEdgeDerivatives(const Eigen::Vector3d& a0,
     const double sin2 = u.cross(v).squaredNorm() / (u.squaredNorm() * v.squaredNorm());
     if (!(sin2 > 1e-10)) free_s = false;
   }
-  Eigen::Matrix<double, 4, Eigen::Dynamic> e(4, int(free_s) + int(free_t));
+  FreeDirections e(4, int(free_s) + int(free_t));
   int k = 0;
   if (free_s) e.col(k++) = Eigen::Vector4d(-1, 1, 0, 0);
   if (free_t) e.col(k++) = Eigen::Vector4d(0, 0, 1, -1);

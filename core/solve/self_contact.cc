@@ -57,9 +57,15 @@ SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessia
       out.blocks.push_back(p.hessian);
     }
   };
+  // The list reaches farther than the barrier: its other pairs cost only
+  // their distance.
+  const double reach = settings_.offset + settings_.activation;
   const auto& triangles = proximity_.triangles();
   for (const auto& [i, t] : pairs.point_triangle) {
     const auto& tri = triangles[t];
+    if (PointTriangle(Row(x, i), Row(x, tri[0]), Row(x, tri[1]), Row(x, tri[2])).squared >=
+        reach * reach)
+      continue;
     const DistanceDerivatives d =
         PointTriangleDerivatives(Row(x, i), Row(x, tri[0]), Row(x, tri[1]), Row(x, tri[2]));
     add({i, tri[0], tri[1], tri[2]},
@@ -73,6 +79,7 @@ SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessia
     const auto& q = edges[b];
     const Eigen::Vector3d a0 = Row(x, p[0]), a1 = Row(x, p[1]), b0 = Row(x, q[0]),
                           b1 = Row(x, q[1]);
+    if (EdgeEdge(a0, a1, b0, b1).squared >= reach * reach) continue;
     const DistanceDerivatives d = EdgeEdgeDerivatives(a0, a1, b0, b1);
     const double threshold =
         MollifierThreshold(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1]));
