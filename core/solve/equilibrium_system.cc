@@ -166,14 +166,14 @@ double EquilibriumSystem::StepBound(const ShellState& state,
   Positions dx(model_.NodeCount(), 3);
   for (int i = 0; i < model_.NodeCount(); ++i)
     dx.row(i) = increment.segment<3>(kDofsPerNode * i).transpose();
-  // No pair's distance changes by more than twice the largest motion: a
+  // No pair's distance changes by more than twice the motions' spread: a
   // step that closes at most 90 % of the smallest gap beyond the offset is
   // whole (as the filter would find), without testing pairs.
   if (self_contact_positions_.rows() == state.positions.rows() &&
       self_contact_positions_ == state.positions) {
     const SelfContactSettings& s = self_contact_->settings();
     const double gap = std::min(self_contact_smallest_, s.offset + s.activation) - s.offset;
-    if (2 * dx.rowwise().norm().maxCoeff() < 0.9 * gap) return 1.0;
+    if (2 * MotionSpread(dx) < 0.9 * gap) return 1.0;
   }
   return self_contact_->StepBound(state.positions, dx);
 }

@@ -14,20 +14,31 @@ Eigen::Vector3d Row(const Positions& x, int i) {
   return x.row(i).transpose();
 }
 
+// The mean length of the quads' edges in the rest shape [m].
+double MeanEdge(const Mesh& mesh) {
+  double sum = 0;
+  for (int e = 0; e < mesh.ElementCount(); ++e)
+    for (int k = 0; k < 4; ++k)
+      sum += (mesh.positions.row(mesh.quads(e, k)) - mesh.positions.row(mesh.quads(e, (k + 1) % 4)))
+                 .norm();
+  return mesh.ElementCount() > 0 ? sum / (4 * mesh.ElementCount()) : 0;
+}
+
 }  // namespace
 
 SelfContact::SelfContact(const Mesh& mesh, const SelfContactSettings& settings)
     : settings_(settings),
-      list_margin_(2 * (settings.offset + settings.activation)),
+      list_margin_(std::max(2 * (settings.offset + settings.activation), MeanEdge(mesh))),
       proximity_(mesh, settings.exclusion),
       rest_(mesh.positions) {}
 
 bool SelfContact::ListCovers(const Positions& x, double motion) const {
   // A pair outside the list was farther than reach + margin apart where the
-  // list was made; its distance shrinks by at most twice any node's motion.
+  // list was made; its distance shrinks by at most twice the spread of the
+  // nodes' motions since (a translation of the whole fabric moves no pair
+  // closer).
   if (list_positions_.rows() != x.rows()) return false;
-  const double moved = (x - list_positions_).rowwise().norm().maxCoeff();
-  return 2 * (moved + motion) <= list_margin_;
+  return 2 * (MotionSpread(x - list_positions_) + motion) <= list_margin_;
 }
 
 SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessian) const {
@@ -123,9 +134,8 @@ std::vector<std::pair<int, int>> SelfContact::NodePairs(const Positions& x, doub
 double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
   // Every pair that could come within the offset during the step: the
   // list's, or those whose boxes swept along the step come that close.
-  const double motion = dx.rowwise().norm().maxCoeff();
   const ProximityPairs pairs =
-      ListCovers(x, motion) ? list_ : proximity_.SweptCandidates(x, dx, settings_.offset);
+      ListCovers(x, MotionSpread(dx)) ? list_ : proximity_.SweptCandidates(x, dx, settings_.offset);
   AccdSettings accd;
   accd.offset = settings_.offset;
   double t = 1;

@@ -62,11 +62,14 @@ class SelfContact {
 
  private:
   // Whether the list still holds every pair that can come within reach
-  // when the nodes are at x and move up to `motion` [m] further.
+  // when the nodes are at x and move further by motions of spread `motion`
+  // [m] (MotionSpread).
   bool ListCovers(const Positions& x, double motion) const;
 
   SelfContactSettings settings_;
-  double list_margin_;  // the list's radius beyond the reach [m]
+  // The list's radius beyond the reach [m]: twice the reach or an element,
+  // whichever is larger.
+  double list_margin_;
   mutable Positions list_positions_;
   mutable ProximityPairs list_;
   SelfProximity proximity_;

@@ -170,7 +170,34 @@ Boxes NodeBoxes(const Positions& x, const Positions* motion) {
   return boxes;
 }
 
+// Whether primitives a and b (their nodes) can come within `gap` of each
+// other while moving from x to x + motion: seen from a frame moving with
+// a's first node, each node moves at most its motion relative to that node,
+// and the distance drops by at most the largest such motion on each side.
+// Their current boxes' gap bounds the distance from below.
+template <size_t N, size_t M>
+bool CanComeWithin(const std::array<int, N>& a,
+                   const std::array<int, M>& b,
+                   const Positions& x,
+                   const Positions& motion,
+                   double gap) {
+  const Eigen::RowVector3d c = motion.row(a[0]);
+  double relative = 0;
+  for (int k : a) relative = std::max(relative, (motion.row(k) - c).norm());
+  double other = 0;
+  for (int k : b) other = std::max(other, (motion.row(k) - c).norm());
+  const auto [alo, ahi] = Box(a, x, nullptr, 0.0);
+  const auto [blo, bhi] = Box(b, x, nullptr, 0.0);
+  return BoxGap(alo, ahi, blo, bhi) - relative - other <= gap;
+}
+
 }  // namespace
+
+double MotionSpread(const Positions& motion) {
+  if (motion.rows() == 0) return 0;
+  const Eigen::RowVector3d c = 0.5 * (motion.colwise().maxCoeff() + motion.colwise().minCoeff());
+  return (motion.rowwise() - c).rowwise().norm().maxCoeff();
+}
 
 SelfProximity::SelfProximity(const Mesh& mesh, double exclusion)
     : rest_(mesh.positions), exclusion_(exclusion) {
@@ -272,8 +299,24 @@ ProximityPairs SelfProximity::SweptCandidates(const Positions& x,
       BoxesOf(triangles_, x, &motion, gap),
       BoxesOf(edges_, x, &motion, 0.0),
       BoxesOf(edges_, x, &motion, gap),
-      [&](int i, int t) { return PointTriangleApartAtRest(i, t); },
-      [&](int e, int f) { return EdgeEdgeApartAtRest(e, f); });
+      [&](int i, int t) { return SweptPointTriangleCounts(i, t, x, motion, gap); },
+      [&](int e, int f) { return SweptEdgeEdgeCounts(e, f, x, motion, gap); });
+}
+
+bool SelfProximity::SweptPointTriangleCounts(
+    int node, int triangle, const Positions& x, const Positions& motion, double gap) const {
+  const auto& t = triangles_[triangle];
+  if (node == t[0] || node == t[1] || node == t[2]) return false;
+  return CanComeWithin(std::array<int, 1>{node}, t, x, motion, gap) &&
+         PointTriangleApartAtRest(node, triangle);
+}
+
+bool SelfProximity::SweptEdgeEdgeCounts(
+    int a, int b, const Positions& x, const Positions& motion, double gap) const {
+  const auto& p = edges_[a];
+  const auto& q = edges_[b];
+  if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) return false;
+  return CanComeWithin(p, q, x, motion, gap) && EdgeEdgeApartAtRest(a, b);
 }
 
 ProximityPairs SelfProximity::SweptCandidatesByBruteForce(const Positions& x,
@@ -284,7 +327,8 @@ ProximityPairs SelfProximity::SweptCandidatesByBruteForce(const Positions& x,
     const auto [plo, phi] = Box(std::array<int, 1>{i}, x, &motion, 0.0);
     for (size_t t = 0; t < triangles_.size(); ++t) {
       const auto [lo, hi] = Box(triangles_[t], x, &motion, gap);
-      if (Overlap(plo, phi, lo, hi) && PointTriangleApartAtRest(i, static_cast<int>(t)))
+      if (Overlap(plo, phi, lo, hi) &&
+          SweptPointTriangleCounts(i, static_cast<int>(t), x, motion, gap))
         out.point_triangle.push_back({i, static_cast<int>(t)});
     }
   }
@@ -293,7 +337,7 @@ ProximityPairs SelfProximity::SweptCandidatesByBruteForce(const Positions& x,
     for (size_t f = e + 1; f < edges_.size(); ++f) {
       const auto [lo, hi] = Box(edges_[f], x, &motion, gap);
       if (Overlap(elo, ehi, lo, hi) &&
-          EdgeEdgeApartAtRest(static_cast<int>(e), static_cast<int>(f)))
+          SweptEdgeEdgeCounts(static_cast<int>(e), static_cast<int>(f), x, motion, gap))
         out.edge_edge.push_back({static_cast<int>(e), static_cast<int>(f)});
     }
   }

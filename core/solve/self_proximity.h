@@ -23,6 +23,12 @@ struct ProximityPairs {
   std::vector<std::array<int, 2>> edge_edge;       // edge, edge (first < second)
 };
 
+// A bound on how much a motion (one row per node) can change the distance
+// between any two points of the fabric, halved: max_i |d_i − c| with c the
+// middle of the motions' range. A rigid translation changes no distance
+// and gives 0. [m]
+double MotionSpread(const Positions& motion);
+
 class SelfProximity {
  public:
   // `exclusion` [m]: pairs closer than this in the rest shape never count.
@@ -37,8 +43,9 @@ class SelfProximity {
   double SmallestDistance(const Positions& positions, double reach) const;
 
   // Every pair whose boxes swept from `positions` to `positions + motion`
-  // come within `gap` [m] of each other: all that can come within `gap`
-  // during that motion (the broad phase of the step filter).
+  // come within `gap` [m] of each other and whose motion relative to each
+  // other could close their present gap to `gap`: all that can come within
+  // `gap` during that motion (the broad phase of the step filter).
   ProximityPairs SweptCandidates(const Positions& positions,
                                  const Positions& motion,
                                  double gap) const;
@@ -55,6 +62,10 @@ class SelfProximity {
  private:
   bool PointTriangleCounts(int node, int triangle, const Positions& x, double reach) const;
   bool EdgeEdgeCounts(int a, int b, const Positions& x, double reach) const;
+  bool SweptPointTriangleCounts(
+      int node, int triangle, const Positions& x, const Positions& motion, double gap) const;
+  bool SweptEdgeEdgeCounts(
+      int a, int b, const Positions& x, const Positions& motion, double gap) const;
   bool PointTriangleApartAtRest(int node, int triangle) const;
   bool EdgeEdgeApartAtRest(int a, int b) const;
 

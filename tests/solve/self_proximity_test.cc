@@ -3,6 +3,7 @@
 // layers of a sheet folded flat onto itself is the gap between them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -103,6 +104,18 @@ TEST(SelfProximity, SweptGridFindsTheSamePairsAsTestingEveryPair) {
       const ProximityPairs brute = proximity.SweptCandidatesByBruteForce(x, motion, gap);
       EXPECT_EQ(gridded.point_triangle, brute.point_triangle) << trial << " " << gap;
       EXPECT_EQ(gridded.edge_edge, brute.edge_edge) << trial << " " << gap;
+      // Conservative: every pair that does come within the gap somewhere
+      // along the motion is a candidate.
+      for (int k = 0; k <= 20; ++k) {
+        const ProximityPairs at = proximity.CandidatesByBruteForce(x + k / 20.0 * motion, gap);
+        for (const auto& pair : at.point_triangle)
+          EXPECT_TRUE(std::binary_search(
+              gridded.point_triangle.begin(), gridded.point_triangle.end(), pair))
+              << trial << " " << gap << " " << k;
+        for (const auto& pair : at.edge_edge)
+          EXPECT_TRUE(std::binary_search(gridded.edge_edge.begin(), gridded.edge_edge.end(), pair))
+              << trial << " " << gap << " " << k;
+      }
       if (trial > 1) {
         EXPECT_GT(brute.point_triangle.size(), 100u) << trial;
       }
