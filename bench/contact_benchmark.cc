@@ -15,6 +15,7 @@
 #include "core/solve/dof_map.h"
 #include "core/solve/equilibrium_system.h"
 #include "core/solve/node_contact.h"
+#include "core/solve/self_contact.h"
 #include "core/solve/self_proximity.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/shell_solver.h"
@@ -69,13 +70,11 @@ BENCHMARK(BM_AssembleOnTable)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The self-contact broad phase once per Newton iteration (issue 17): a
-// 20 × 10 cm sheet of 200 × 100 elements (20 301 nodes) or 100 × 50 (5 151),
-// folded flat onto itself one thickness (h = 0.5 mm) apart, every pair within
-// 1.5 h (the barrier's reach: the thickness and half of it) and more than
-// 1 cm apart at rest.
-void BM_SelfProximity(benchmark::State& bench) {
-  const int nx = static_cast<int>(bench.range(0)), ny = nx / 2;
+// Self-contact (issue 17) on a 20 × 10 cm sheet of nx × nx/2 elements:
+// 100 (5 151 nodes), 140 (10 011), 200 (20 301). Folded flat onto itself
+// one thickness (h = 0.5 mm) apart, or lying flat (nothing within reach).
+Mesh BenchSheet(int nx) {
+  const int ny = nx / 2;
   Mesh mesh;
   mesh.positions.resize((nx + 1) * (ny + 1), 3);
   for (int j = 0; j <= ny; ++j)
@@ -87,17 +86,55 @@ void BM_SelfProximity(benchmark::State& bench) {
       const int n = j * (nx + 1) + i;
       mesh.quads.row(j * nx + i) << n, n + 1, n + nx + 2, n + nx + 1;
     }
+  return mesh;
+}
+
+Positions FoldedFlat(const Mesh& mesh) {
   Positions folded = mesh.positions;
   for (int i = 0; i < folded.rows(); ++i)
     if (folded(i, 0) > 0.1 + 1e-12) folded.row(i) << 0.2 - folded(i, 0), folded(i, 1), 5e-4;
+  return folded;
+}
+
+// The broad phase alone: every pair within 1.5 h (the barrier's reach: the
+// thickness and half of it) and more than 1 cm apart at rest.
+void BM_SelfProximity(benchmark::State& bench) {
+  const Mesh mesh = BenchSheet(static_cast<int>(bench.range(0)));
+  const Positions x = bench.range(1) ? FoldedFlat(mesh) : Positions(mesh.positions);
   const SelfProximity proximity(mesh, 0.01);
   ProximityPairs pairs;
-  for (auto _ : bench) pairs = proximity.Candidates(folded, 7.5e-4);
-  bench.counters["nodes"] = static_cast<double>(folded.rows());
+  for (auto _ : bench) pairs = proximity.Candidates(x, 7.5e-4);
+  bench.counters["nodes"] = static_cast<double>(x.rows());
   bench.counters["point_triangle"] = static_cast<double>(pairs.point_triangle.size());
   bench.counters["edge_edge"] = static_cast<double>(pairs.edge_edge.size());
 }
-BENCHMARK(BM_SelfProximity)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SelfProximity)
+    ->ArgNames({"n", "folded"})
+    ->ArgsProduct({{100, 140, 200}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
+
+// What self-contact adds to one Newton iteration once its list of pairs is
+// made (the list is searched again only after the nodes moved): the
+// barrier's energy, gradient and 12 × 12 blocks over every pair in reach.
+void BM_SelfContactEvaluate(benchmark::State& bench) {
+  const Mesh mesh = BenchSheet(static_cast<int>(bench.range(0)));
+  const Positions x = bench.range(1) ? FoldedFlat(mesh) : Positions(mesh.positions);
+  SelfContactSettings settings;
+  settings.offset = 4.5e-4;  // the layers 1.11 h apart, inside the band
+  settings.activation = 0.5 * settings.offset;
+  settings.stiffness = 1e-3;
+  settings.exclusion = 0.01;
+  const SelfContact contact(mesh, settings);
+  contact.Evaluate(x, true);  // makes the list
+  int active = 0;
+  for (auto _ : bench) active = contact.Evaluate(x, true).active_pairs;
+  bench.counters["nodes"] = static_cast<double>(x.rows());
+  bench.counters["active_pairs"] = active;
+}
+BENCHMARK(BM_SelfContactEvaluate)
+    ->ArgNames({"n", "folded"})
+    ->ArgsProduct({{140}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace drape

@@ -31,6 +31,11 @@ double BoxGap(const A3& alo, const A3& ahi, const A3& blo, const A3& bhi) {
   return (blo - ahi).max(alo - bhi).max(0.0).matrix().norm();
 }
 
+// The largest distance between a point of one box and a point of the other.
+double BoxReach(const A3& alo, const A3& ahi, const A3& blo, const A3& bhi) {
+  return (bhi - alo).max(ahi - blo).matrix().norm();
+}
+
 // A uniform grid of cubes hashed into a table of buckets (Teschner et al.,
 // "Optimized spatial hashing for collision detection of deformable
 // objects", VMV 2003): each box is listed in the bucket of every cell it
@@ -244,6 +249,8 @@ bool SelfProximity::PointTriangleApartAtRest(int node, int triangle) const {
   const A3 p = rest_.row(node).transpose().array();
   if (BoxGap(p, p, rest_triangle_lo_[triangle], rest_triangle_hi_[triangle]) > exclusion_)
     return true;
+  if (BoxReach(p, p, rest_triangle_lo_[triangle], rest_triangle_hi_[triangle]) <= exclusion_)
+    return false;
   return PointTriangle(Row(rest_, node), Row(rest_, t[0]), Row(rest_, t[1]), Row(rest_, t[2]))
              .squared > exclusion_ * exclusion_;
 }
@@ -255,6 +262,9 @@ bool SelfProximity::EdgeEdgeApartAtRest(int a, int b) const {
   if (piece_[p[0]] != piece_[q[0]]) return true;
   if (BoxGap(rest_edge_lo_[a], rest_edge_hi_[a], rest_edge_lo_[b], rest_edge_hi_[b]) > exclusion_)
     return true;
+  if (BoxReach(rest_edge_lo_[a], rest_edge_hi_[a], rest_edge_lo_[b], rest_edge_hi_[b]) <=
+      exclusion_)
+    return false;
   return EdgeEdge(Row(rest_, p[0]), Row(rest_, p[1]), Row(rest_, q[0]), Row(rest_, q[1])).squared >
          exclusion_ * exclusion_;
 }
@@ -264,19 +274,18 @@ bool SelfProximity::PointTriangleCounts(int node,
                                         const Positions& x,
                                         double reach) const {
   const auto& t = triangles_[triangle];
-  if (node == t[0] || node == t[1] || node == t[2]) return false;
-  if (PointTriangle(Row(x, node), Row(x, t[0]), Row(x, t[1]), Row(x, t[2])).squared > reach * reach)
-    return false;
-  return PointTriangleApartAtRest(node, triangle);
+  // Apart at rest first: with the rest boxes it is mostly decided without
+  // an exact distance, and it rejects the many neighbours around a node.
+  return PointTriangleApartAtRest(node, triangle) &&
+         PointTriangle(Row(x, node), Row(x, t[0]), Row(x, t[1]), Row(x, t[2])).squared <=
+             reach * reach;
 }
 
 bool SelfProximity::EdgeEdgeCounts(int a, int b, const Positions& x, double reach) const {
   const auto& p = edges_[a];
   const auto& q = edges_[b];
-  if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) return false;
-  if (EdgeEdge(Row(x, p[0]), Row(x, p[1]), Row(x, q[0]), Row(x, q[1])).squared > reach * reach)
-    return false;
-  return EdgeEdgeApartAtRest(a, b);
+  return EdgeEdgeApartAtRest(a, b) &&
+         EdgeEdge(Row(x, p[0]), Row(x, p[1]), Row(x, q[0]), Row(x, q[1])).squared <= reach * reach;
 }
 
 ProximityPairs SelfProximity::Candidates(const Positions& x, double reach) const {
