@@ -3,8 +3,10 @@
 # iterations, factorisations and the median wall time of N runs, as a
 # Markdown table. With a second binary, both run alternately (the machine's
 # noise hits both alike) and the table shows before, after and their ratio.
+# With --self-contact-off instead, the baseline is the same binary on each
+# scene with "contact": {"self": false}: what self-contact costs.
 #
-#   bench/shipped_scenes.sh [-n RUNS] DRAPE [BASELINE_DRAPE]
+#   bench/shipped_scenes.sh [-n RUNS] DRAPE [BASELINE_DRAPE | --self-contact-off]
 #
 # e.g. bench/shipped_scenes.sh -n 5 build/app/drape /tmp/drape-before
 set -euo pipefail
@@ -12,11 +14,27 @@ set -euo pipefail
 source "$(dirname "$0")/timing_lib.sh"
 parse_runs 5 "$@"
 set -- "${rest[@]}"
-after=${1:?usage: bench/shipped_scenes.sh [-n RUNS] DRAPE [BASELINE_DRAPE]}
+after=${1:?usage: bench/shipped_scenes.sh [-n RUNS] DRAPE [BASELINE_DRAPE | --self-contact-off]}
 before=${2:-}
-scenes_dir="$(cd "$(dirname "$0")/.." && pwd)/resources/scenes"
+root="$(cd "$(dirname "$0")/.." && pwd)"
+scenes_dir="$root/resources/scenes"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# The baseline's scene for each scene: itself, or (--self-contact-off) a copy
+# with self-contact off, in a copy of resources/ so relative paths still hold.
+baseline_scene() { echo "$1"; }
+if [[ "$before" == "--self-contact-off" ]]; then
+  before=$after
+  cp -r "$root/resources" "$work/"
+  for scene in "$work"/resources/scenes/*.json; do
+    if grep -q '"contact": {' "$scene"; then
+      sed -i 's/"contact": {/"contact": {"self": false, /' "$scene"
+    else
+      sed -i '0,/{/s//{"contact": {"self": false},/' "$scene"
+    fi
+  done
+  baseline_scene() { echo "$work/resources/scenes/$(basename "$1")"; }
+fi
 
 
 # One run: prints "seconds steps iterations factorisations".
@@ -46,7 +64,7 @@ for scene in "$scenes_dir"/*.json; do
   : >"$work/a" && : >"$work/b"
   for ((i = 0; i < runs; ++i)); do
     run_once "$after" "$scene" "$work/out-a" >>"$work/a"
-    [[ -n "$before" ]] && run_once "$before" "$scene" "$work/out-b" >>"$work/b"
+    [[ -n "$before" ]] && run_once "$before" "$(baseline_scene "$scene")" "$work/out-b" >>"$work/b"
   done
   read -r _ steps iterations factorizations < <(tail -1 "$work/a")
   t_after=$(cut -d' ' -f1 "$work/a" | median)
