@@ -28,7 +28,7 @@ double ArcLengthStepper::Correct(Eigen::VectorXd& correction,
                                  Eigen::VectorXd& translations,
                                  double& lambda_increment) const {
   Eigen::VectorXd full = system_.dofs().Expand(correction);
-  if (const double t = system_.StepBound(state, full); t < 1) {
+  if (const double t = CollisionFreeFraction(state, full, lambda, delta); t < 1) {
     full *= t;
     correction *= t;
     delta *= t;
@@ -39,6 +39,17 @@ double ArcLengthStepper::Correct(Eigen::VectorXd& correction,
   ApplyIncrement(full, state);
   loading_.Place(lambda, state);
   return MaxTranslation(full);
+}
+
+double ArcLengthStepper::CollisionFreeFraction(const ShellState& state,
+                                               const Eigen::VectorXd& full,
+                                               double lambda,
+                                               double delta) const {
+  if (!system_.HasSelfContact()) return 1.0;
+  ShellState moved = state;
+  ApplyIncrement(full, moved);
+  loading_.Place(lambda + delta, moved);
+  return system_.StepBound(state, Positions(moved.positions - state.positions));
 }
 
 Eigen::VectorXd ArcLengthStepper::AssembleWithRate(const ShellState& state, double lambda) {
@@ -119,7 +130,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
 
   // A predictor that would pass through the fabric's own layers is
   // shortened, and the step with it.
-  if (const double t = system_.StepBound(state, dofs.Expand(dl * u_i)); t < 1) {
+  if (const double t = CollisionFreeFraction(state, dofs.Expand(dl * u_i), lambda, dl); t < 1) {
     ds *= t;
     dl *= t;
   }

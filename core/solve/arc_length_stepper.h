@@ -98,10 +98,17 @@ class ArcLengthStepper {
   // Assembles at (state, λ); returns F₀ over the free DOFs.
   Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);
   Eigen::VectorXd Translations(const Eigen::VectorXd& free) const;
+  // The fraction of an update (`full`, 5 per node, with λ moving from
+  // `lambda` by `delta`) that keeps the fabric's layers apart, the held
+  // nodes' prescribed motion included (EquilibriumSystem::StepBound).
+  double CollisionFreeFraction(const ShellState& state,
+                               const Eigen::VectorXd& full,
+                               double lambda,
+                               double delta) const;
   // Applies a corrector's (Δq, δλ), both first cut to the part that keeps
-  // the fabric's layers apart (EquilibriumSystem::StepBound): the state and
-  // its prescribed motion move on, the step's accumulated translations and
-  // Δλ grow. Returns max|Δu|.
+  // the fabric's layers apart (CollisionFreeFraction): the state and its
+  // prescribed motion move on, the step's accumulated translations and Δλ
+  // grow. Returns max|Δu|.
   double Correct(Eigen::VectorXd& correction,
                  double& delta,
                  ShellState& state,

@@ -166,6 +166,11 @@ double EquilibriumSystem::StepBound(const ShellState& state,
   Positions dx(model_.NodeCount(), 3);
   for (int i = 0; i < model_.NodeCount(); ++i)
     dx.row(i) = increment.segment<3>(kDofsPerNode * i).transpose();
+  return StepBound(state, dx);
+}
+
+double EquilibriumSystem::StepBound(const ShellState& state, const Positions& dx) const {
+  if (!self_contact_) return 1.0;
   // No pair's distance changes by more than twice the motions' spread: a
   // step that closes at most 90 % of the smallest gap beyond the offset is
   // whole (as the filter would find), without testing pairs.

@@ -55,6 +55,10 @@ class EquilibriumSystem {
   // The largest fraction of a full increment (5 per node) that keeps the
   // layers apart (1 without self-contact).
   double StepBound(const ShellState& state, const Eigen::VectorXd& increment) const;
+  // The same for the nodes moving from `state` by `motion` (one row per
+  // node, held nodes' prescribed motion included).
+  double StepBound(const ShellState& state, const Positions& motion) const;
+  bool HasSelfContact() const { return self_contact_ != nullptr; }
 
   // Assembles the internal force (and the tangent) at `state`; returns the
   // energy. With `velocity` (prescribed DOF rates, 5 per node) and the
