@@ -53,7 +53,7 @@ class RenderCli : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("drape-render-cli-" + std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    // The paper's strip fold (Table 3), 65 steps.
+    // The paper's strip fold (Table 3).
     const auto r = RunDrape("run '" + (test::ScenesDir() / "strip-fold.json").string() + "' -o '" +
                             (dir_ / "fold").string() + "' --quiet");
     ASSERT_EQ(r.exit_code, 0) << r.output;

@@ -102,12 +102,12 @@ TEST(PathHandles, KeyframeHandlesAreReachedAtTheirLambda) {
 TEST(PathHandles, EachMoveStartsWhereTheGrippersLastMoveEnded) {
   // The paper's strip fold: the left edge (x = −10 cm) turns 180° about the
   // y axis through (0, 0, c), which puts it at (10 cm, 0, 2c), then slides 1 cm
-  // (c = 0.625 h: the end lands 1.25 h above the lower layer).
+  // (c = 0.75 h: the end lands 1.5 h above the lower layer).
   const Scene scene = ReadScene(DRAPE_SOURCE_DIR "/resources/scenes/strip-fold.json");
   const ShellModel model = BuildShellModel(scene);
   const auto moves = GripperMoves(scene, model);
   ASSERT_EQ(moves.size(), 2u);
-  const double c = 0.625 * 0.0469e-2;
+  const double c = 0.75 * 0.0469e-2;
   EXPECT_EQ(moves[0].stage, 1);
   EXPECT_EQ(moves[0].carried, "end");
   EXPECT_LT((moves[0].start - Eigen::Vector3d(-0.1, 0, 0)).norm(), 1e-12);

@@ -103,7 +103,7 @@ TEST_F(Widgets, DraggingAPathHandleEditsThePathUndoablyAndItIsSaved) {
   ASSERT_EQ(handles->count(), 3);           // centre, end, axis
   const Eigen::Vector3d start(-0.1, 0, 0);  // the left edge's centroid
   const Eigen::Vector3d c = handles->position(0);
-  EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.625 * 0.0469e-2)).norm(), 1e-12);
+  EXPECT_LT((c - Eigen::Vector3d(0, 0, 0.75 * 0.0469e-2)).norm(), 1e-12);
   EXPECT_LT(
       (handles->position(1) - MotionAt(original.stages[1].moves[0].path, 1).Apply(start)).norm(),
       1e-12);
