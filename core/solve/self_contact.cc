@@ -14,21 +14,11 @@ Eigen::Vector3d Row(const Positions& x, int i) {
   return x.row(i).transpose();
 }
 
-// The mean length of the quads' edges in the rest shape [m].
-double MeanEdge(const Mesh& mesh) {
-  double sum = 0;
-  for (int e = 0; e < mesh.ElementCount(); ++e)
-    for (int k = 0; k < 4; ++k)
-      sum += (mesh.positions.row(mesh.quads(e, k)) - mesh.positions.row(mesh.quads(e, (k + 1) % 4)))
-                 .norm();
-  return mesh.ElementCount() > 0 ? sum / (4 * mesh.ElementCount()) : 0;
-}
-
 }  // namespace
 
 SelfContact::SelfContact(const Mesh& mesh, const SelfContactSettings& settings)
     : settings_(settings),
-      list_margin_(std::max(2 * (settings.offset + settings.activation), MeanEdge(mesh))),
+      list_margin_(std::max(2 * (settings.offset + settings.activation), MeanEdgeLength(mesh))),
       proximity_(mesh, settings.exclusion),
       rest_(mesh.positions) {}
 
