@@ -107,6 +107,18 @@ TEST(Layers, ADrapeWithoutFoldsReportsNone) {
     EXPECT_EQ(w.find("passes into itself"), std::string::npos);
 }
 
+// How many steps report layers (within 2 h), each checked to be at least
+// 0.99 h apart.
+int StepsWithLayersApart(const LayerRun& run, double h) {
+  int reported = 0;
+  for (const auto& d : run.distances)
+    if (d) {
+      ++reported;
+      EXPECT_GE(*d, 0.99 * h);
+    }
+  return reported;
+}
+
 // As shipped (contact.self by default, the gripper landing the end 1.5 h
 // above the lower layer), the same fold keeps its layers a thickness apart
 // at every step.
@@ -117,13 +129,7 @@ TEST(Layers, SelfContactKeepsTheFoldsLayersAThicknessApart) {
   ASSERT_NEAR(std::get<ArcPath>(scene.stages.at(1).moves.at(0).path).center[2], 0.75 * h, 1e-15);
   const LayerRun run = Solve(scene);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
-  int reported = 0;
-  for (const auto& d : run.distances)
-    if (d) {
-      ++reported;
-      EXPECT_GE(*d, 0.99 * h);
-    }
-  EXPECT_GT(reported, 10);  // the layers did come together
+  EXPECT_GT(StepsWithLayersApart(run, h), 10);  // the layers did come together
   EXPECT_GE(run.summary.min_layer_distance, 0.99 * h);
   for (const auto& w : run.summary.warnings)
     EXPECT_EQ(w.find("passes into itself"), std::string::npos) << w;
@@ -139,13 +145,7 @@ TEST(Layers, SelfContactOnTheTableKeepsLayersApartAndForcesInBalance) {
   const double h = scene.material.thickness;
   const LayerRun run = Solve(scene);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
-  int reported = 0;
-  for (const auto& d : run.distances)
-    if (d) {
-      ++reported;
-      EXPECT_GE(*d, 0.99 * h);
-    }
-  EXPECT_GT(reported, 10);
+  EXPECT_GT(StepsWithLayersApart(run, h), 10);
   const Eigen::Vector3d weight = BuildShellModel(scene).total_weight;
   EXPECT_LT((run.held_and_contact + weight).norm(), 1e-6 * weight.norm())
       << run.held_and_contact.transpose() << " against " << weight.transpose();
