@@ -27,6 +27,7 @@ struct RunArgs {
   bool verbose = false;
   int threads = 0;
   int render_every = 0;
+  double time_limit_s = 0;  // 0: the scene's solver.max_wall_s
 };
 
 CancellationToken* g_cancel = nullptr;
@@ -116,6 +117,7 @@ int RunRun(const RunArgs& args) {
     scene = ReadScene(args.scene);
     SolverOptions options = SolverOptions::FromScene(scene.solver);
     options.threads = args.threads;
+    if (args.time_limit_s > 0) options.max_wall_s = args.time_limit_s;
     solver = std::make_unique<ShellSolver>(scene, options);
   } catch (const SceneError& e) {
     std::cerr << "drape run: " << args.scene << ": " << e.what() << "\n";
@@ -188,6 +190,11 @@ void AddRunCommand(CLI::App& app, CommandRunner& runner) {
   cmd->add_flag("-v,--verbose", args->verbose, "Print the full solve report");
   cmd->add_option("--threads", args->threads, "Threads for assembly (0: all cores)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--time-limit",
+                  args->time_limit_s,
+                  "Stop the run (failed, every converged step kept) after this many seconds; "
+                  "overrides solver.max_wall_s")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--render-every",
                   args->render_every,
                   "Render every N-th converged step to DIR/frames/step_NNNN.png while solving")

@@ -750,7 +750,8 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
                   "max_step_cuts",
                   "psi",
                   "branching",
-                  "sequencing"});
+                  "sequencing",
+                  "max_wall_s"});
   SolverSettings s;
   auto fraction = [&](const char* key, double& out) {
     if (auto v = c.Find(key)) {
@@ -774,6 +775,11 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("sequencing", s.sequencing, 1);
   if (auto a = c.Find("acceleration")) s.acceleration = a->Boolean();
   if (auto p = c.Find("psi")) s.psi = p->PositiveQuantity(dim::kLength);
+  if (auto w = c.Find("max_wall_s")) {
+    s.max_wall_s = w->Number();
+    if (!(*s.max_wall_s > 0) || !std::isfinite(*s.max_wall_s))
+      w->Fail("must be a number of seconds > 0, got " + std::to_string(*s.max_wall_s));
+  }
   if (auto b = c.Find("branching"))
     s.branching = static_cast<Branching>(b->Choice({"stable", "fundamental"}));
   return s;

@@ -186,6 +186,7 @@ json ToJson(const SolverSettings& s) {
          {"branching", ToString(s.branching)}};
   if (s.psi) j["psi"] = *s.psi;
   if (s.sequencing > 1) j["sequencing"] = s.sequencing;
+  if (s.max_wall_s) j["max_wall_s"] = *s.max_wall_s;
   return j;
 }
 

@@ -287,6 +287,9 @@ struct SolverSettings {
   // > 1: follow the path on the mesh this many times coarser in each
   // direction, then solve the scene's mesh from its end (mesh sequencing).
   int sequencing = 1;
+  // Wall-clock limit of a run [s]: past it the run stops (failed), keeping
+  // every converged step. Absent: none.
+  std::optional<double> max_wall_s;
   friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 

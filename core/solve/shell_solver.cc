@@ -187,6 +187,17 @@ struct ShellSolver::Impl {
   };
   Augmentation Augment(double lambda, const StageLoading& loading, ContinuationStep& step);
   void Stop(Termination t, std::string message) {
+    if (t == Termination::kCancelled && run_token.DeadlinePassed()) {
+      // Stopped by the run's own deadline, not by the user.
+      char limit[160];
+      std::snprintf(limit,
+                    sizeof limit,
+                    "the run reached its time limit of %g s (solver.max_wall_s, drape run "
+                    "--time-limit): ",
+                    options.max_wall_s);
+      t = Termination::kTimeLimit;
+      message = limit + message.substr(message.find(' ') + 1);  // "cancelled in …" → "in …"
+    }
     summary.termination = t;
     summary.message = std::move(message);
   }
@@ -209,6 +220,8 @@ struct ShellSolver::Impl {
   double loads_done = 0;   // point-load factor reached by earlier stages
   const std::vector<StepObserver>* observers = nullptr;
   const CancellationToken* cancel = nullptr;
+  // The token the run checks: the caller's, and the run's deadline.
+  CancellationToken run_token;
   SolveSummary summary;
   Clock::time_point start;
   int last_negative_pivots = 0;
@@ -943,7 +956,11 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary = SolveSummary();
   m.start = Clock::now();
   m.observers = &observers;
-  m.cancel = cancel;
+  m.run_token.Follow(cancel);
+  if (m.options.max_wall_s > 0)
+    m.run_token.SetDeadline(m.start + std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(m.options.max_wall_s)));
+  m.cancel = &m.run_token;
   m.summary.nodes = m.model.NodeCount();
   m.summary.elements = m.model.mesh.ElementCount();
   m.summary.dofs = m.model.DofCount();

@@ -28,6 +28,8 @@ const char* ToString(Termination t) {
       return "numerical failure";
     case Termination::kNoStableBranch:
       return "no branch past a bifurcation";
+    case Termination::kTimeLimit:
+      return "time limit";
   }
   return "?";
 }

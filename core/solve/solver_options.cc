@@ -1,5 +1,6 @@
 #include "core/solve/solver_options.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace drape {
@@ -29,6 +30,7 @@ SolverOptions SolverOptions::FromScene(const SolverSettings& settings) {
   o.psi = settings.psi.value_or(0.0);
   o.branching = settings.branching;
   o.sequencing = settings.sequencing;
+  o.max_wall_s = settings.max_wall_s.value_or(0.0);
   return o;
 }
 
@@ -86,7 +88,12 @@ bool SolverOptions::IsValid(std::string* error) const {
                "max_augmentation_iterations >= 0",
                error) &&
          Check(sequencing >= 1, "sequencing", sequencing, "sequencing >= 1", error) &&
-         Check(threads >= 0, "threads", threads, "threads >= 0", error);
+         Check(threads >= 0, "threads", threads, "threads >= 0", error) &&
+         Check(max_wall_s >= 0 && std::isfinite(max_wall_s),
+               "max_wall_s",
+               max_wall_s,
+               "max_wall_s >= 0 (0: no limit)",
+               error);
 }
 
 }  // namespace drape

@@ -53,6 +53,9 @@ struct SolverOptions {
   int sequencing = 1;
   // Threads for element assembly; 0 uses OpenMP's default.
   int threads = 0;
+  // Wall-clock limit of a run [s], pauses included; 0: none. Past it the run
+  // stops with Termination::kTimeLimit and keeps every converged step.
+  double max_wall_s = 0;
 
   // Copies the scene's `solver` settings over the defaults.
   static SolverOptions FromScene(const SolverSettings& settings);

@@ -523,6 +523,26 @@ TEST(RunCliFailure, TooFewIterationsFailsWithAPartialResult) {
   EXPECT_EQ(states.steps.size(), result["steps"].size());
 }
 
+// --time-limit: the diagonal fold (seconds long) stopped after a tenth of a
+// second fails with the reason and keeps every step it converged, in
+// result.json and states.bin alike.
+TEST(RunCliFailure, ATimeLimitStopsTheRunAndKeepsItsSteps) {
+  TempDir dir("time-limit");
+  const CommandResult r = RunCommand("run " + Quote(test::ScenesDir() / "diagonal-fold.json") +
+                                     " -o " + Quote(dir / "out") + " --time-limit 0.1");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const json result = ReadJson(dir / "out" / "result.json");
+  EXPECT_EQ(result["status"], "failed");
+  const std::string message = result["message"];
+  EXPECT_NE(message.find("time limit of 0.1 s"), std::string::npos) << message;
+  const StateFile states = ReadStateFile(dir / "out" / "states.bin");
+  EXPECT_EQ(states.steps.size(), result["steps"].size());
+  EXPECT_NE(RunCommand("run " + Quote(test::ScenesDir() / "diagonal-fold.json") + " -o " +
+                       Quote(dir / "bad") + " --time-limit -1")
+                .exit_code,
+            0);
+}
+
 // A strip balanced on a frictionless rod is a chain over a pulley: once its
 // weight outgrows the stabilisation springs, its symmetric hang bifurcates
 // and every branch from there slides off (the part would snap). Under

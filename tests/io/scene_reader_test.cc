@@ -55,6 +55,19 @@ TEST(SceneReader, SequencingMustDivideTheMeshOfOneWeightStage) {
             "each way");
 }
 
+TEST(SceneReader, WallClockLimitIsSecondsAboveZero) {
+  json doc = Minimal();
+  EXPECT_FALSE(SceneFromJson(doc).solver.max_wall_s.has_value());
+  doc["solver"]["max_wall_s"] = 90.5;
+  EXPECT_EQ(SceneFromJson(doc).solver.max_wall_s, 90.5);
+  const Scene limited = SceneFromJson(doc);  // written and read back unchanged
+  EXPECT_EQ(SceneFromJson(json::parse(SceneToJson(limited).dump())), limited);
+  doc["solver"]["max_wall_s"] = 0;
+  EXPECT_EQ(ErrorOf(doc), "solver.max_wall_s: must be a number of seconds > 0, got 0.000000");
+  doc["solver"]["max_wall_s"] = "1 min";
+  EXPECT_NE(ErrorOf(doc).find("solver.max_wall_s"), std::string::npos) << ErrorOf(doc);
+}
+
 TEST(SceneReader, SelfContactAndItsThickness) {
   json doc = Minimal();
   EXPECT_FALSE(SceneFromJson(doc).contact.has_value());
