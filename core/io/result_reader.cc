@@ -77,8 +77,26 @@ RunRecord ReadRunRecord(const fs::path& path) {
   } catch (const json::exception& e) {
     Fail(file, std::string("malformed result: ") + e.what());
   }
-  // A run cut short may have written one more state than result.json lists
-  // (or the reverse); keep the steps both have.
+  // A run still going, or killed, has states.bin ahead of result.json (which
+  // it rewrites about once a second). The states carry their stage, step
+  // and λ; only moved obstacles' placements are result.json's alone, so
+  // without moving obstacles every state counts.
+  bool obstacles_move = false;
+  for (const auto& stage : record.scene.stages)
+    for (const auto& move : stage.moves) obstacles_move |= !move.obstacle.empty();
+  if (!obstacles_move)
+    for (size_t i = record.steps.size(); i < record.states.size(); ++i) {
+      RecordedStep step;
+      step.stage = record.states[i].stage;
+      step.step = record.states[i].step;
+      step.lambda = record.states[i].lambda;
+      if (step.stage >= 0 && step.stage < static_cast<int>(record.scene.stages.size()))
+        step.stage_name = record.scene.stages[step.stage].name;
+      step.obstacles.assign(record.scene.obstacles.size(), ObstaclePlacement{});
+      record.steps.push_back(std::move(step));
+    }
+  // Otherwise keep the steps both have (a run cut short may also have one
+  // state fewer than result.json lists).
   const size_t n = std::min(record.states.size(), record.steps.size());
   record.states.resize(n);
   record.steps.resize(n);

@@ -1,8 +1,10 @@
 #include "core/io/result_writer.h"
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/io/scene_writer.h"
@@ -62,6 +64,10 @@ struct ResultWriter::Impl {
   bool has_last = false;
   bool contact = false;  // the scene has obstacles
   std::vector<std::string> obstacle_names;
+  // The provisional result.json kept current while the run goes: when it
+  // was last written and how long that took.
+  std::chrono::steady_clock::time_point last_written;
+  double write_s = 0;
 };
 
 ResultWriter::ResultWriter(const std::filesystem::path& directory,
@@ -93,6 +99,11 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
     for (const char* axis : {"x", "y", "z"}) impl_->csv << "," << probe.name << "_" << axis << "_m";
   impl_->csv << "\n";
   impl_->csv.flush();
+  // A folder that reads from the start: status "running", no step yet.
+  SolveSummary running;
+  running.message = "running: no step converged yet";
+  Write(Document(running, "running"));
+  impl_->last_written = std::chrono::steady_clock::now();
 }
 
 ResultWriter::~ResultWriter() = default;
@@ -141,7 +152,9 @@ void ResultWriter::AddStep(const StepState& step) {
                                                 {"translation", Vector(p.translation)}};
   }
   impl_->steps.push_back(std::move(s));
-  auto& csv = impl_->csv;
+  // One line, written whole: a process killed at any moment leaves no half
+  // line behind.
+  std::ostringstream csv;
   csv.precision(17);
   // Stage names are user text: quote them for CSV.
   std::string name = step.stage_name;
@@ -157,16 +170,34 @@ void ResultWriter::AddStep(const StepState& step) {
   for (const auto& p : step.probes)
     csv << "," << p.value.x() << "," << p.value.y() << "," << p.value.z();
   csv << "\n";
-  csv.flush();
+  impl_->csv << csv.str();
+  impl_->csv.flush();
   impl_->last = step;
   impl_->has_last = true;
+  // Kept current as steps converge, at most as often as writing it takes
+  // 5 % of the time (it grows with the steps), and after the first step.
+  const auto now = std::chrono::steady_clock::now();
+  if (impl_->steps.size() == 1 ||
+      std::chrono::duration<double>(now - impl_->last_written).count() >=
+          std::max(1.0, 20 * impl_->write_s)) {
+    SolveSummary running;
+    running.message = "running: " + std::to_string(impl_->steps.size()) + " steps converged so far";
+    Write(Document(running, "running"));
+    impl_->write_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
+    impl_->last_written = now;
+  }
 }
 
 void ResultWriter::Finish(const SolveSummary& summary) {
+  Write(Document(summary, ResultStatus(summary.termination)));
+}
+
+nlohmann::json ResultWriter::Document(const SolveSummary& summary,
+                                      const std::string& status) const {
   json r;
   r["drape_result"] = kResultFormatVersion;
   r["scene"] = impl_->scene_name;
-  r["status"] = ResultStatus(summary.termination);
+  r["status"] = status;
   r["message"] = summary.message;
   r["mesh"] = {{"nodes", impl_->nodes}, {"elements", impl_->elements}, {"dofs", impl_->dofs}};
   r["stages"] = json::array();
@@ -225,7 +256,10 @@ void ResultWriter::Finish(const SolveSummary& summary) {
                  {"solve_s", summary.solve_s}};
   r["states_file"] = kStatesFileName;
   r["scene_resolved"] = impl_->scene_resolved;
+  return r;
+}
 
+void ResultWriter::Write(const nlohmann::json& r) const {
   const auto path = directory_ / kResultFileName;
   const auto temporary = directory_ / (std::string(kResultFileName) + ".part");
   {

@@ -5,6 +5,8 @@
 // result.json is written when the run ends, however it ends.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -30,7 +32,9 @@ class ResultWriter {
   ResultWriter(const std::filesystem::path& directory, const Scene& scene, const ShellModel& model);
   ~ResultWriter();
 
-  // Records one converged step (the observer the CLI installs).
+  // Records one converged step (the observer the CLI installs): appended to
+  // states.bin and steps.csv at once, and result.json (status "running")
+  // rewritten after the first step and then at most about once a second.
   void AddStep(const StepState& step);
 
   // Writes result.json with the status of `summary`.
@@ -39,6 +43,10 @@ class ResultWriter {
   const std::filesystem::path& directory() const { return directory_; }
 
  private:
+  nlohmann::json Document(const SolveSummary& summary, const std::string& status) const;
+  // Through a temporary file that is renamed: never half a file.
+  void Write(const nlohmann::json& document) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::filesystem::path directory_;
