@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -397,6 +399,15 @@ SparseCholesky::SparseCholesky(FactorizationPath path)
 
 SparseCholesky::~SparseCholesky() = default;
 
+double AvailableMemoryBytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string line;
+  double kib = 0;
+  while (std::getline(meminfo, line))
+    if (std::sscanf(line.c_str(), "MemAvailable: %lf kB", &kib) == 1) return kib * 1024;
+  return std::numeric_limits<double>::infinity();
+}
+
 void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {
   CheckShape(upper);
   Impl& m = *impl_;
@@ -417,6 +428,24 @@ void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {
     m.ll_factor = cholmod_analyze(&a, &m.ll);
     ThrowOnError(m.ll, "analyze");
     if (!m.ll_factor) throw std::runtime_error("SparseCholesky: CHOLMOD analyze failed");
+    // Values and row indices of L (a supernodal factor stores its padded
+    // blocks), before any of it is allocated.
+    const double nonzeros = m.ll.lnz;
+    factor_bytes_ = std::max(12 * nonzeros, m.ll_factor->is_super ? 8.0 * m.ll_factor->xsize : 0.0);
+    const double limit = memory_limit_ > 0 ? memory_limit_ : AvailableMemoryBytes();
+    if (factor_bytes_ > limit) {
+      char message[320];
+      std::snprintf(message,
+                    sizeof message,
+                    "the factorisation needs about %.3g GB (%.3g nonzeros in the factor of %d "
+                    "unknowns), more than the %.3g GB of memory available: use a coarser mesh "
+                    "(fabric.mesh) or solve the path on one (solver.sequencing)",
+                    factor_bytes_ / 1e9,
+                    nonzeros,
+                    n,
+                    limit / 1e9);
+      throw std::runtime_error(message);
+    }
   } catch (...) {
     m.n = -1;
     throw;

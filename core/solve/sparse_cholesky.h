@@ -38,8 +38,16 @@ class SparseCholesky {
 
   // `upper`: the upper triangle (column-major, compressed, sorted indices) of
   // the symmetric matrix. Only its pattern is used. Throws std::runtime_error
-  // when CHOLMOD fails (out of memory).
+  // when CHOLMOD fails (out of memory), or, before any numeric work, when
+  // the factor would not fit in the memory limit: one message with the
+  // estimate.
   void Analyze(const Eigen::SparseMatrix<double>& upper);
+
+  // The memory the factor may take [bytes]; 0 (the default): what the
+  // machine has available when Analyze runs (MemAvailable).
+  void SetMemoryLimit(double bytes) { memory_limit_ = bytes; }
+  // The factor's size from the last analysis [bytes].
+  double FactorBytes() const { return factor_bytes_; }
 
   // Numeric factorisation of a matrix with the analysed pattern.
   FactorizationInfo Factorize(const Eigen::SparseMatrix<double>& upper);
@@ -55,6 +63,12 @@ class SparseCholesky {
   FactorizationPath path_;
   std::unique_ptr<Impl> impl_;
   FactorizationInfo info_;
+  double memory_limit_ = 0;
+  double factor_bytes_ = 0;
 };
+
+// The memory available to a new allocation [bytes] (Linux MemAvailable);
+// +∞ where that cannot be read.
+double AvailableMemoryBytes();
 
 }  // namespace drape

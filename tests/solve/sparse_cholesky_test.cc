@@ -578,5 +578,35 @@ TEST(SparseCholesky, RejectsMisuse) {
   EXPECT_LT(RelativeResidual(k, chol.Solve(b), b), 1e-12);
 }
 
+// Before any numeric work: a factor larger than the memory limit is refused
+// with one message giving the estimate. The estimate is at least the
+// values and indices of the matrix's own triangle (L holds its pattern).
+TEST(SparseCholesky, AFactorThatWouldNotFitIsRefusedWithItsSize) {
+  const SparseMatrix upper = Laplacian2D(60, 60, 0.0);  // positive definite
+  SparseCholesky probe;
+  probe.Analyze(upper);
+  const double bytes = probe.FactorBytes();
+  EXPECT_GE(bytes, 12.0 * upper.nonZeros());
+
+  SparseCholesky limited;
+  limited.SetMemoryLimit(0.5 * bytes);
+  try {
+    limited.Analyze(upper);
+    ADD_FAILURE() << "no error for a factor of " << bytes << " bytes";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the factorisation needs about"), std::string::npos) << message;
+    EXPECT_NE(message.find("3600 unknowns"), std::string::npos) << message;
+    EXPECT_NE(message.find("solver.sequencing"), std::string::npos) << message;
+  }
+  limited.SetMemoryLimit(2 * bytes);
+  limited.Analyze(upper);
+  EXPECT_EQ(limited.Factorize(upper).negative_pivots, 0);
+
+  const double available = AvailableMemoryBytes();
+  EXPECT_GT(available, 0);
+  EXPECT_TRUE(std::isfinite(available));  // Linux: /proc/meminfo
+}
+
 }  // namespace
 }  // namespace drape
