@@ -1,20 +1,20 @@
 #!/usr/bin/env bash
 # The engine, reader and command-line tests (all but the workbench and the
 # renderer) built with AddressSanitizer and UndefinedBehaviorSanitizer in
-# build-sanitize/ and run through CTest. Any report fails its test: UBSan
+# build-asan/ and run through CTest. Any report fails its test: UBSan
 # halts on the first, ASan aborts, LeakSanitizer fails the process at exit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/setup.sh
 drape_install_packages
 jobs=$(nproc 2>/dev/null || echo 2)
-if [ ! -f build-sanitize/CMakeCache.txt ]; then
-  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRAPE_SANITIZE=ON \
+if [ ! -f build-asan/CMakeCache.txt ]; then
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRAPE_SANITIZE=ON \
     -DDRAPE_WITH_GUI=OFF -DDRAPE_BUILD_BENCHMARKS=OFF
 fi
-cmake --build build-sanitize --parallel "$jobs"
+cmake --build build-asan --parallel "$jobs"
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer_leaks.supp:print_suppressions=0"
-cd build-sanitize
+cd build-asan
 exec ctest --output-on-failure --parallel "$jobs" "$@"

@@ -63,7 +63,8 @@ inline Scene RodHang(const RodHangSpec& s) {
   scene.material.bending.warp = LinearBending{};
   scene.obstacles.push_back(
       {"rod", CylinderShape{{0.0, 0.0, RodAxisZ(s)}, {0.0, 1.0, 0.0}, s.radius, {}}});
-  scene.contact = Contact{{}, s.friction};  // penalty "auto"
+  scene.contact = Contact{};  // penalty "auto"
+  scene.contact->friction = s.friction;
   Stage gravity;
   gravity.name = "SW";
   gravity.kind = StageKind::kGravity;
