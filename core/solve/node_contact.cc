@@ -223,10 +223,13 @@ ContactReport NodeContact::Report(const ShellState& state) const {
   return r;
 }
 
-std::vector<std::string> NodeContact::Penetrations(const ShellState& state, double depth) const {
+std::vector<std::string> NodeContact::Penetrations(const ShellState& state,
+                                                  double depth,
+                                                  const std::vector<int>& among) const {
   std::vector<std::pair<double, std::string>> found;
   ForEachContact(state, [&](int i, int o, double g, const DistanceQuery&, const Eigen::Vector3d&) {
     if (-g <= depth) return;
+    if (!among.empty() && std::find(among.begin(), among.end(), i) == among.end()) return;
     char text[200];
     const auto x = state.positions.row(i);
     std::snprintf(text,

@@ -89,7 +89,10 @@ class NodeContact {
   ContactReport Report(const ShellState& state) const;
   // Nodes deeper than `depth` inside an obstacle, deepest first: "node N is
   // X mm inside 'table'" lines, for the start of a run.
-  std::vector<std::string> Penetrations(const ShellState& state, double depth) const;
+  // `among`: only these nodes (empty: every node).
+  std::vector<std::string> Penetrations(const ShellState& state,
+                                        double depth,
+                                        const std::vector<int>& among = {}) const;
 
   double penalty() const { return penalty_; }
   double stabilization() const { return stabilization_; }

@@ -134,6 +134,17 @@ struct ShellSolver::Impl {
   // Re-solves at the stage's end, springs re-anchored, until their force is
   // negligible: the stage then ends in the equilibrium without them.
   bool Settle(int index, const StageLoading& loading, StageSummary& stage);
+  // False (and the run stopped, naming the gripper, the obstacle and the
+  // key) when the stage's motion puts a held node deeper than the thickness
+  // into an obstacle: no equilibrium exists there, and the path would only
+  // find that out after many cut-backs.
+  bool GrippersStayOutside(int index, const StageLoading& loading);
+  // What a user can change when a stage cannot take its next step.
+  std::string WhatToChange(const Stage& spec, const StageSummary& stage) const;
+  // Causes that lie in the contact settings ("" when none applies): a part
+  // held by nothing but frictionless contact, a penalty far above the
+  // automatic one.
+  std::string ContactHint() const;
   // Shared bookkeeping of a failed step: true to retry smaller, false to stop.
   bool RetryAfterFailure(const ContinuationStep& step,
                          const Stage& spec,
@@ -186,6 +197,11 @@ struct ShellSolver::Impl {
     std::string shortfall;
   };
   Augmentation Augment(double lambda, const StageLoading& loading, ContinuationStep& step);
+  void StopAtMaxSteps(const Stage& spec, double lambda) {
+    Stop(Termination::kMaxStepsReached,
+         "stage '" + spec.name + "' needed more than " + std::to_string(options.max_steps) +
+             " steps (solver.max_steps) and stopped at λ = " + std::to_string(lambda));
+  }
   void Stop(Termination t, std::string message) {
     if (t == Termination::kCancelled && run_token.DeadlinePassed()) {
       // Stopped by the run's own deadline, not by the user.
@@ -437,6 +453,70 @@ bool ShellSolver::Impl::Emit(int stage_index,
   return !stop;
 }
 
+bool ShellSolver::Impl::GrippersStayOutside(int index, const StageLoading& loading) {
+  if (!contact || !loading.MovesGrippers()) return true;
+  constexpr int kSamples = 64;
+  ShellState placed = state;
+  for (int k = 1; k <= kSamples; ++k) {
+    const double lambda = static_cast<double>(k) / kSamples;
+    loading.Place(lambda, placed);
+    for (size_t g = 0; g < model.grippers.size(); ++g) {
+      if (released[g]) continue;
+      const auto inside = contact->Penetrations(placed, model.thickness, model.grippers[g].nodes);
+      if (inside.empty()) continue;
+      char where[120];
+      std::snprintf(where, sizeof where, " at λ = %.3g", lambda);
+      Stop(Termination::kIllPosed,
+           "stage '" + scene.stages[index].name + "': gripper '" + model.grippers[g].name +
+               "' is driven into an obstacle: " + inside.front() + where +
+               "; change its path (stages[" + std::to_string(index) +
+               "].moves) so that it stays outside");
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string ShellSolver::Impl::ContactHint() const {
+  if (!contact) return "";
+  std::string hint;
+  if (contact->stabilization() > 0 && contact->friction() == 0)
+    // A hanging part slides off a frictionless form the way a chain runs off
+    // a pulley: no stable rest exists for the path to reach.
+    hint += ". Nothing but frictionless contact holds the part (no support, no gripper): it can "
+            "slide off the obstacle, so it may have no stable rest; give contact.friction, or "
+            "hold it with a support";
+  const double automatic = AutoPenalty(model);
+  if (scene.contact && scene.contact->penalty && contact->penalty() > 3 * automatic) {
+    char text[240];
+    std::snprintf(text,
+                  sizeof text,
+                  ". contact.penalty %.3g N/m³ is %.0f times the automatic one (E h / ℓ² = %.3g): "
+                  "so stiff a contact switches on and off abruptly; \"auto\" adapts it",
+                  contact->penalty(),
+                  contact->penalty() / automatic,
+                  automatic);
+    hint += text;
+  }
+  return hint;
+}
+
+std::string ShellSolver::Impl::WhatToChange(const Stage& spec, const StageSummary& stage) const {
+  const std::string key = "stages[" + std::to_string(&spec - scene.stages.data()) + "]";
+  if (stage.steps == 0)
+    // Not even the smallest first step converged: the tangent at the start
+    // barely resists the load (no bending, nothing holding the part) or the
+    // load is far beyond it.
+    return "not even a first step 2^" + std::to_string(options.max_step_cuts) +
+           " times smaller than " + key + ".initial_increment converged: the part barely resists "
+           "its load where it starts (material.bending, supports, grippers)" +
+           ContactHint();
+  return "the path turns or stiffens sharply here (contact, a snap, a fold): allow more "
+         "cut-backs (solver.max_step_cuts), more iterations (solver.max_iterations), or the "
+         "other solver.branching" +
+         ContactHint();
+}
+
 bool ShellSolver::Impl::RetryAfterFailure(const ContinuationStep& step,
                                           const Stage& spec,
                                           double lambda,
@@ -450,7 +530,8 @@ bool ShellSolver::Impl::RetryAfterFailure(const ContinuationStep& step,
   if (cuts_in_a_row == options.max_step_cuts) {
     Stop(Termination::kStepTooSmall,
          "stage '" + spec.name + "' stopped at λ = " + std::to_string(lambda) + " after " +
-             std::to_string(cuts_in_a_row) + " cut-backs: " + step.reason);
+             std::to_string(cuts_in_a_row) + " cut-backs: " + step.reason + "; " +
+             WhatToChange(spec, stage));
     return false;
   }
   // Cut back and retry: counted only when it happens.
@@ -549,9 +630,7 @@ bool ShellSolver::Impl::RunLoadControl(int index,
   int cuts_in_a_row = 0;
   while (lambda < 1.0) {
     if (summary.steps >= options.max_steps) {
-      Stop(Termination::kMaxStepsReached,
-           "stage '" + spec.name + "' needed more than " + std::to_string(options.max_steps) +
-               " steps");
+      StopAtMaxSteps(spec, lambda);
       return false;
     }
     increment = std::min({increment, options.max_increment, 1.0 - lambda});
@@ -620,9 +699,7 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
   int cuts_in_a_row = 0;
   while (lambda < 1.0 - 1e-12) {
     if (summary.steps >= options.max_steps) {
-      Stop(Termination::kMaxStepsReached,
-           "stage '" + spec.name + "' needed more than " + std::to_string(options.max_steps) +
-               " steps");
+      StopAtMaxSteps(spec, lambda);
       return false;
     }
     const ShellState saved = state;
@@ -650,7 +727,9 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
       Stop(Termination::kStepTooSmall,
            "stage '" + spec.name +
                "': the path runs back past λ = −1 and does not reach the "
-               "stage's end");
+               "stage's end: past its limit points the part would snap, a jump no "
+               "quasi-static path follows; change what the stage does (stages[" +
+               std::to_string(index) + "]) or hold the part more (supports, grippers)");
       return false;
     }
     cuts_in_a_row = 0;
@@ -821,7 +900,7 @@ bool ShellSolver::Impl::PassBifurcation(int index,
     Stop(Termination::kNoStableBranch,
          where + sw.failure +
              ". The primary path past it is unstable; solver.branching: fundamental follows "
-             "it anyway");
+             "it anyway" + ContactHint());
     return false;
   }
   if (sw.bifurcation) {
@@ -894,6 +973,7 @@ bool ShellSolver::Impl::RunStage(int index) {
       if (!move.obstacle.empty() && scene.obstacles[o].name == move.obstacle)
         moved.push_back({static_cast<int>(o), &move.path, state.obstacles.at(o)});
   const StageLoading loading(model, spec, Holds(spec), weight_done, loads_done, std::move(moved));
+  if (!GrippersStayOutside(index, loading)) return false;
   lambda_direction = 1;
   stage_path_length = 0;
 

@@ -80,7 +80,9 @@ size_t ExpectWholeFolder(const fs::path& out, const std::string& what) {
   std::ifstream csv(out / "steps.csv", std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(csv)), std::istreambuf_iterator<char>());
   EXPECT_FALSE(text.empty()) << what;
-  if (!text.empty()) EXPECT_EQ(text.back(), '\n') << what << ": a half line";
+  if (!text.empty()) {
+    EXPECT_EQ(text.back(), '\n') << what << ": a half line";
+  }
   const size_t rows = std::count(text.begin(), text.end(), '\n') - 1;  // less the header
   // A step goes to states.bin first, then to steps.csv.
   EXPECT_TRUE(rows == states.steps.size() || rows + 1 == states.steps.size())
