@@ -33,6 +33,10 @@ namespace fs = std::filesystem;
 constexpr std::string_view kKesCurvatureUnit = "1/cm";
 constexpr std::string_view kKesMomentUnit = "gf*cm/cm";
 constexpr std::size_t kMinBranchPoints = 4;
+// Finite values near the largest double overflowed the sums and differences
+// of averaging and interpolation to infinity. Bending data in SI are nowhere
+// near; below this, every product of two differences stays finite.
+constexpr double kMaxMagnitude = 1e100;
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 struct Line {
@@ -500,6 +504,10 @@ double KawabataParser::CellValue(int line,
   if (!value) Fail(line, column.label + ": " + Enclosed(cell) + " is not a number");
   const double si = *value * factor;
   if (!std::isfinite(si)) Fail(line, column.label + ": " + Enclosed(cell) + " is not finite");
+  if (std::abs(si) > kMaxMagnitude) {
+    Fail(line,
+         column.label + ": " + Enclosed(cell) + " is too large (more than 1e100 in SI units)");
+  }
   return si;
 }
 

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <climits>
+#include <cstdint>
 #include <fstream>
 #include <stdexcept>
 
@@ -18,6 +20,17 @@ namespace {
 
 [[noreturn]] void Fail(const fs::path& file, const std::string& message) {
   throw std::runtime_error(file.string() + ": " + message);
+}
+
+// get<int>() casts a float such as 1e10 to int: undefined behaviour, which
+// GCC's sanitizers do not report, and a step number made up.
+int IntOf(const json& j, const std::string& where, const fs::path& file) {
+  const bool fits = j.is_number_unsigned() ? j.get<std::uint64_t>() <= INT_MAX
+                    : j.is_number_integer()
+                        ? j.get<std::int64_t>() >= INT_MIN && j.get<std::int64_t>() <= INT_MAX
+                        : false;
+  if (!fits) Fail(file, where + ": " + j.dump() + " is not an integer in the range of int");
+  return j.get<int>();
 }
 
 ObstaclePlacement PlacementOf(const json& j) {
@@ -58,8 +71,9 @@ RunRecord ReadRunRecord(const fs::path& path) {
     for (const auto& o : record.scene.obstacles) obstacle_names.push_back(o.name);
     for (const auto& s : r.at("steps")) {
       RecordedStep step;
-      step.stage = s.at("stage").get<int>();
-      step.step = s.at("step").get<int>();
+      const std::string where = "steps[" + std::to_string(record.steps.size()) + "]";
+      step.stage = IntOf(s.at("stage"), where + ".stage", file);
+      step.step = IntOf(s.at("step"), where + ".step", file);
       step.lambda = s.at("lambda").get<double>();
       if (step.stage >= 0 && step.stage < static_cast<int>(record.scene.stages.size()))
         step.stage_name = record.scene.stages[step.stage].name;

@@ -31,8 +31,9 @@ struct RunRecord {
 };
 
 // `path` is a result folder or its result.json. Throws std::runtime_error
-// naming the file and the problem (missing, not a result, a state file that
-// does not match the result's mesh).
+// naming the file and the problem (missing, not a result, a step's stage or
+// number that is not an integer, a state file that does not match the
+// result's mesh or is damaged, see ReadStateFile).
 RunRecord ReadRunRecord(const std::filesystem::path& path);
 
 // The shell state of step index `i` (0-based in `states`): positions and

@@ -1,14 +1,21 @@
 #include "core/io/state_file.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace drape {
 namespace {
 
 constexpr char kMagic[8] = {'D', 'R', 'A', 'P', 'E', 'S', 'T', 'A'};
 constexpr std::uint32_t kVersion = 1;
+constexpr std::uint64_t kHeaderBytes = 8 + 16;
+// Directors are written as unit vectors to rounding (~1e-15); far looser than
+// that, still far from what a damaged file holds.
+constexpr double kDirectorTolerance = 1e-6;
 
 // The format is little-endian; so is every platform this builds on (x86-64,
 // arm64), and the static_assert keeps it that way.
@@ -17,6 +24,12 @@ static_assert(std::endian::native == std::endian::little, "state files are littl
 void WriteOrThrow(std::FILE* f, const void* data, size_t bytes, const std::filesystem::path& path) {
   if (bytes && std::fwrite(data, 1, bytes, f) != bytes)
     throw std::runtime_error("cannot write '" + path.string() + "' (disk full?)");
+}
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
 }
 
 }  // namespace
@@ -69,13 +82,30 @@ StateFile ReadStateFile(const std::filesystem::path& file) {
   auto fail = [&](const std::string& what) {
     throw std::runtime_error("state file '" + file.string() + "': " + what);
   };
+  auto at = [](std::uint64_t offset) { return " (byte " + std::to_string(offset) + ")"; };
   char magic[8];
   std::uint32_t header[4];
   if (std::fread(magic, 1, 8, f) != 8 || std::memcmp(magic, kMagic, 8) != 0)
     fail("not a Drape state file");
   if (std::fread(header, sizeof header, 1, f) != 1) fail("truncated header");
   if (header[0] != kVersion) fail("unsupported version " + std::to_string(header[0]));
-  const int n = static_cast<int>(header[1]), e = static_cast<int>(header[2]);
+  // The counts size every allocation below: a damaged header must not ask for
+  // more memory than the file could fill.
+  std::error_code error;
+  const std::uint64_t file_bytes = std::filesystem::file_size(file, error);
+  if (error) fail("cannot tell its size (" + error.message() + ")");
+  const std::uint64_t nodes = header[1], elements = header[2];
+  const std::uint64_t mesh_bytes = 24 * nodes + 16 * elements + (elements % 2 ? 4 : 0);
+  if (kHeaderBytes + mesh_bytes > file_bytes)
+    fail("truncated mesh: the header gives " + std::to_string(nodes) + " nodes and " +
+         std::to_string(elements) + " elements, " + std::to_string(mesh_bytes) +
+         " bytes of mesh, but " + std::to_string(file_bytes - kHeaderBytes) +
+         " bytes follow the header");
+  if (nodes > static_cast<std::uint64_t>(std::numeric_limits<int>::max()) ||
+      elements > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+    fail("the header gives " + std::to_string(nodes) + " nodes and " + std::to_string(elements) +
+         " elements, more than a mesh can have");
+  const int n = static_cast<int>(nodes), e = static_cast<int>(elements);
   StateFile out;
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x(n, 3);
   Eigen::Matrix<std::int32_t, Eigen::Dynamic, 4, Eigen::RowMajor> q(e, 4);
@@ -86,9 +116,23 @@ StateFile ReadStateFile(const std::filesystem::path& file) {
     std::int32_t pad;
     if (std::fread(&pad, sizeof pad, 1, f) != 1) fail("truncated mesh");
   }
+  // Readers downstream index nodes by these and compute with every number:
+  // nothing out of range or non-finite may pass.
+  for (int i = 0; i < n; ++i)
+    if (!x.row(i).allFinite())
+      fail("node " + std::to_string(i) + " of the mesh: its position is not a finite number" +
+           at(kHeaderBytes + 24 * static_cast<std::uint64_t>(i)));
+  for (int i = 0; i < e; ++i)
+    for (int c = 0; c < 4; ++c)
+      if (q(i, c) < 0 || q(i, c) >= n)
+        fail("quad " + std::to_string(i) + " has node " + std::to_string(q(i, c)) +
+             ", outside the mesh's " + std::to_string(n) + " nodes" +
+             at(kHeaderBytes + 24 * nodes + 16 * static_cast<std::uint64_t>(i) + 4 * c));
   out.mesh.positions = x;
   out.mesh.quads = q.cast<int>();
-  for (;;) {
+  const std::uint64_t record_bytes = 16 + 48 * nodes;
+  for (std::uint64_t record = 0;; ++record) {
+    const std::uint64_t offset = kHeaderBytes + mesh_bytes + record * record_bytes;
     std::int32_t ids[2];
     StoredStep step;
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> p(n, 3), t(n, 3);
@@ -97,6 +141,24 @@ StateFile ReadStateFile(const std::filesystem::path& file) {
         std::fread(p.data(), sizeof(double), p.size(), f) != static_cast<size_t>(p.size()) ||
         std::fread(t.data(), sizeof(double), t.size(), f) != static_cast<size_t>(t.size()))
       break;  // end of file, or a record cut off by a crash: keep the whole ones
+    const std::string where = "record " + std::to_string(record) + " (stage " +
+                              std::to_string(ids[0]) + ", step " + std::to_string(ids[1]) + ")";
+    if (!std::isfinite(step.lambda))
+      fail(where + ": the load factor is not a finite number" + at(offset + 8));
+    for (int i = 0; i < n; ++i) {
+      if (!p.row(i).allFinite())
+        fail(where + ": node " + std::to_string(i) + "'s position is not a finite number" +
+             at(offset + 16 + 24 * static_cast<std::uint64_t>(i)));
+      if (!t.row(i).allFinite())
+        fail(where + ": node " + std::to_string(i) + "'s director is not a finite number" +
+             at(offset + 16 + 24 * (nodes + static_cast<std::uint64_t>(i))));
+      // Directors are unit vectors; a rotation rebuilt from anything else
+      // (StateOf) is no rotation, and overflows for large ones.
+      const double length = t.row(i).norm();
+      if (std::abs(length - 1.0) > kDirectorTolerance)
+        fail(where + ": node " + std::to_string(i) + "'s director is not a unit vector (length " +
+             Number(length) + ")" + at(offset + 16 + 24 * (nodes + static_cast<std::uint64_t>(i))));
+    }
     step.stage = ids[0];
     step.step = ids[1];
     step.positions = p;

@@ -50,7 +50,10 @@ struct StateFile {
 };
 
 // Reads a whole state file. Throws std::runtime_error naming the file and
-// the problem (not a state file, unsupported version, truncated header).
+// the problem (not a state file, unsupported version, truncated header, a
+// mesh larger than the file, a quad's node out of range, a number that is not
+// finite, a director that is not a unit vector) and, past the header, its
+// record and byte offset.
 StateFile ReadStateFile(const std::filesystem::path& file);
 
 }  // namespace drape

@@ -120,6 +120,25 @@ bool ParseDouble(std::string_view text, double& value) {
          std::isfinite(value);
 }
 
+// Larger coordinates overflow the cross products and volumes (cubes of
+// coordinate differences) the checks and queries compute: NaN passed every
+// check and the closest-triangle search found none. No obstacle is this
+// large in any unit.
+constexpr double kMaxCoordinate = 1e50;
+
+// A vertex coordinate; the reason it is not one otherwise.
+bool ParseCoordinate(std::string_view text, double& value, std::string& why) {
+  if (!ParseDouble(text, value)) {
+    why = "bad number '" + std::string(text) + "' in vertex";
+    return false;
+  }
+  if (std::abs(value) > kMaxCoordinate) {
+    why = "coordinate '" + std::string(text) + "' is too large (more than 1e50 in magnitude)";
+    return false;
+  }
+  return true;
+}
+
 bool ParseInt(std::string_view text, long long& value) {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   return !text.empty() && error == std::errc() && end == text.data() + text.size();
@@ -160,8 +179,9 @@ RawMesh ReadObj(std::string_view text, const Reporter& report) {
       double values[3];
       for (std::size_t k = 1; k < tokens.size(); ++k) {
         double value;
-        if (!ParseDouble(tokens[k], value))
-          report.FailAt(line, "bad number " + Quoted(tokens[k]) + " in vertex");
+        std::string why;
+        if (k <= 3 ? !ParseCoordinate(tokens[k], value, why) : !ParseDouble(tokens[k], value))
+          report.FailAt(line, k <= 3 ? why : "bad number " + Quoted(tokens[k]) + " in vertex");
         if (k <= 3) values[k - 1] = value;
       }
       positions.emplace_back(values[0], values[1], values[2]);
@@ -237,9 +257,10 @@ RawMesh ReadAsciiStl(std::string_view text, const Reporter& report) {
     } else if (keyword == "vertex") {
       double xyz[3];
       if (tokens.size() != 4) report.FailAt(line, "a vertex needs three coordinates");
-      for (int k = 0; k < 3; ++k)
-        if (!ParseDouble(tokens[k + 1], xyz[k]))
-          report.FailAt(line, "bad number " + Quoted(tokens[k + 1]) + " in vertex");
+      for (int k = 0; k < 3; ++k) {
+        std::string why;
+        if (!ParseCoordinate(tokens[k + 1], xyz[k], why)) report.FailAt(line, why);
+      }
       loop.push_back(
           merger.Add({xyz[0], xyz[1], xyz[2]}, static_cast<int>(mesh.vertices.size()) + 1, mesh));
     } else if (keyword == "endloop") {

@@ -14,8 +14,9 @@ namespace drape {
 
 // Reads and checks the mesh. Throws SceneError (where = `where`, e.g.
 // "obstacles[1].mesh.file") when the file cannot be read, is neither OBJ nor
-// STL, has no triangles, degenerate triangles, or is not closed (an edge not
-// shared by exactly two triangles) — the message says which and where.
+// STL, has a coordinate beyond 1e50 in magnitude, no triangles, degenerate
+// triangles, or is not closed (an edge not shared by exactly two triangles) —
+// the message says which and where.
 std::unique_ptr<ObstacleGeometry> MakeTriangleMeshGeometry(const std::filesystem::path& file,
                                                            const std::string& where);
 

@@ -27,6 +27,9 @@ constexpr double kOunceForce = kOunce * kGravity;  // [N]
 constexpr double kPoundForce = kPound * kGravity;  // [N]
 constexpr Dimension kTime{0, 0, 1, 0};
 constexpr int kMaxExponent = 99;  // keeps the integer exponents far from overflow
+// Each '(' is a level of recursion: without a bound, a long enough run of
+// them overflowed the stack.
+constexpr int kMaxNesting = 32;
 
 struct NamedUnit {
   std::string_view name;
@@ -233,6 +236,16 @@ class UnitParser {
       } else {
         unit = {unit.si_factor / right.si_factor, unit.dimension / right.dimension};
       }
+      // Bounded here as after '^': repeated factors would otherwise add up
+      // past the range of int.
+      CheckExponents(unit.dimension);
+    }
+  }
+
+  void CheckExponents(const Dimension& e) const {
+    if (std::abs(e.length) > kMaxExponent || std::abs(e.mass) > kMaxExponent ||
+        std::abs(e.time) > kMaxExponent || std::abs(e.angle) > kMaxExponent) {
+      Fail("exponent too large");
     }
   }
 
@@ -252,11 +265,7 @@ class UnitParser {
       unit.dimension = {
           d.length * exponent, d.mass * exponent, d.time * exponent, d.angle * exponent};
       unit.si_factor = std::pow(unit.si_factor, exponent);
-      const Dimension& e = unit.dimension;
-      if (std::abs(e.length) > kMaxExponent || std::abs(e.mass) > kMaxExponent ||
-          std::abs(e.time) > kMaxExponent || std::abs(e.angle) > kMaxExponent) {
-        Fail("exponent too large");
-      }
+      CheckExponents(unit.dimension);
     }
   }
 
@@ -292,12 +301,17 @@ class UnitParser {
         }
         return {1.0, dim::kNone};
       case TokenKind::kOpen: {
+        if (++depth_ > kMaxNesting) {
+          Fail("parentheses nested more than " + std::to_string(kMaxNesting) +
+               " deep, at character " + std::to_string(pos_) + " of the unit");
+        }
         const Unit inner = Product();
         if (Peek().kind != TokenKind::kClose) {
           if (Peek().kind == TokenKind::kEnd) Fail("missing ')'");
           ExpectOperatorOrEnd();
         }
         Take();
+        --depth_;
         return inner;
       }
       default:
@@ -391,6 +405,7 @@ class UnitParser {
   std::string_view text_;
   std::string_view context_;
   std::size_t pos_ = 0;
+  int depth_ = 0;  // of parentheses open
   Token next_;
   bool peeked_ = false;
 };
