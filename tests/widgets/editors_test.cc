@@ -655,6 +655,16 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   panel->targetIterations()->setValue(4);
   emit panel->targetIterations()->editingFinished();
   EXPECT_EQ(doc->scene().solver.target_iterations, 4);
+  // The run's time limit: none by default, seconds when set, undoable.
+  EXPECT_EQ(panel->timeLimit()->text().toStdString(), "none");
+  panel->timeLimit()->setValue(90);
+  emit panel->timeLimit()->editingFinished();
+  ASSERT_TRUE(doc->scene().solver.max_wall_s.has_value());
+  EXPECT_EQ(*doc->scene().solver.max_wall_s, 90.0);
+  EXPECT_EQ(panel->timeLimit()->text().toStdString(), "90.0 s");
+  doc->undoStack()->undo();
+  EXPECT_FALSE(doc->scene().solver.max_wall_s.has_value());
+  EXPECT_EQ(panel->timeLimit()->text().toStdString(), "none");
   // Mesh sequencing: the strip fold moves a gripper in three stages, so it
   // is refused with the reader's message and the field goes back.
   EXPECT_EQ(panel->sequencing()->text().toStdString(), "off");

@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -276,6 +277,15 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   solver_form->addRow("tolerance ‖R‖/‖R₀‖", tolerance_);
   solver_form->addRow("target iterations N_p", target_iterations_);
   solver_form->addRow("max steps", max_steps_);
+  time_limit_ = new QDoubleSpinBox(solver);
+  time_limit_->setRange(0, 1e7);
+  time_limit_->setDecimals(1);
+  time_limit_->setSuffix(" s");
+  time_limit_->setSpecialValueText("none");
+  time_limit_->setToolTip(
+      "Wall-clock limit of a run (solver.max_wall_s), pauses included: past it the run stops "
+      "(failed), keeping every converged step. none: no limit");
+  solver_form->addRow("time limit", time_limit_);
   sequencing_ = new QSpinBox(solver);
   sequencing_->setRange(1, 20);
   sequencing_->setSpecialValueText("off");
@@ -304,6 +314,15 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   connect(max_steps_, &QSpinBox::editingFinished, this, [this, edit] {
     edit("max steps", [](Scene& s, double v) { s.solver.max_steps = static_cast<int>(v); })(
         max_steps_->value(), QString::number(max_steps_->value()));
+  });
+  connect(time_limit_, &QDoubleSpinBox::editingFinished, this, [this] {
+    if (refreshing_) return;
+    Scene after = document_->scene();
+    const double seconds = time_limit_->value();
+    after.solver.max_wall_s = seconds > 0 ? std::optional<double>(seconds) : std::nullopt;
+    if (after.solver.max_wall_s == document_->scene().solver.max_wall_s) return;
+    document_->apply(seconds > 0 ? QString("time limit %1 s").arg(seconds) : "no time limit",
+                     after);
   });
   connect(sequencing_, &QSpinBox::editingFinished, this, [this, edit] {
     edit("mesh sequencing", [](Scene& s, double v) { s.solver.sequencing = static_cast<int>(v); })(
@@ -501,6 +520,7 @@ void PropertyPanel::refresh() {
   tolerance_->setValue(s.solver.tolerance, QString::number(s.solver.tolerance));
   target_iterations_->setValue(s.solver.target_iterations);
   max_steps_->setValue(s.solver.max_steps);
+  time_limit_->setValue(s.solver.max_wall_s.value_or(0));
   sequencing_->setValue(s.solver.sequencing);
   branching_->setCurrentIndex(s.solver.branching == Branching::kStable ? 0 : 1);
   refreshing_ = false;

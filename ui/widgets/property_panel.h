@@ -17,6 +17,7 @@ class QComboBox;
 class QFormLayout;
 class QLabel;
 class QLineEdit;
+class QDoubleSpinBox;
 class QSpinBox;
 
 namespace drape {
@@ -69,6 +70,7 @@ class PropertyPanel : public QWidget {
   QuantityField* tolerance() const { return tolerance_; }
   QSpinBox* targetIterations() const { return target_iterations_; }
   QSpinBox* maxSteps() const { return max_steps_; }
+  QDoubleSpinBox* timeLimit() const { return time_limit_; }
   QComboBox* branching() const { return branching_; }
   QSpinBox* sequencing() const { return sequencing_; }
   QLabel* meshInfo() const { return mesh_info_; }
@@ -118,6 +120,7 @@ class PropertyPanel : public QWidget {
   QComboBox* branching_;
   QuantityField* tolerance_;
   QSpinBox *target_iterations_, *max_steps_, *sequencing_;
+  QDoubleSpinBox* time_limit_;
   bool refreshing_ = false;
 };
 
