@@ -26,6 +26,8 @@ using CommandRunner = std::function<int()>;
 void AddValidateCommand(CLI::App& app, CommandRunner& runner);
 // Adds `run SCENE -o DIR [--quiet] [--verbose] [--threads N]`.
 void AddRunCommand(CLI::App& app, CommandRunner& runner);
+// Adds `study STUDY -o DIR [--jobs N] [--emit slurm|parallel]` and `study DIR --collect`.
+void AddStudyCommand(CLI::App& app, CommandRunner& runner);
 // Adds `material fit FILE …` and `material list`.
 void AddMaterialCommand(CLI::App& app, CommandRunner& runner);
 // Adds `render INPUT -o PNG …` and `animate RESULT -o MOVIE …` (need VTK).

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   drape::app::AddValidateCommand(app, runner);
   drape::app::AddRunCommand(app, runner);
   drape::app::AddMaterialCommand(app, runner);
+  drape::app::AddStudyCommand(app, runner);
 #if defined(DRAPE_WITH_RENDER) || defined(DRAPE_RENDER_PROGRAM)
   drape::app::AddRenderCommands(app, runner);
   drape::app::AddExportCommand(app, runner);

@@ -20,6 +20,8 @@ DRAPE_PACKAGES=(
   qt6-base-dev libqt6opengl6-dev qt6-charts-dev libgl-dev
   # headless display for render and GUI tests
   xvfb xauth
+  # drape study --emit parallel is tested by running its list
+  parallel
 )
 
 drape_missing_packages() {

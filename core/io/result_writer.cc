@@ -253,7 +253,11 @@ nlohmann::json ResultWriter::Document(const SolveSummary& summary,
   r["timing"] = {{"total_s", summary.total_s},
                  {"assembly_s", summary.assembly_s},
                  {"factorization_s", summary.factorization_s},
-                 {"solve_s", summary.solve_s}};
+                 {"solve_s", summary.solve_s},
+                 {"peak_memory_bytes", summary.peak_memory_bytes}};
+  r["counts"] = {{"steps", summary.steps},
+                 {"iterations", summary.iterations},
+                 {"factorizations", summary.factorizations}};
   r["states_file"] = kStatesFileName;
   r["scene_resolved"] = impl_->scene_resolved;
   return r;

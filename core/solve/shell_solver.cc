@@ -1147,6 +1147,7 @@ SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,
   m.summary.indefinite_factorizations = t.indefinite_factorizations;
   m.summary.reused_factorizations = t.reused_factorizations;
   m.summary.total_s = SecondsSince(m.start);
+  m.summary.peak_memory_bytes = PeakMemoryBytes();
   return m.summary;
 }
 

@@ -96,6 +96,7 @@ struct SolveSummary {
   double factorization_s = 0;
   double solve_s = 0;
   double observer_s = 0;
+  double peak_memory_bytes = 0;  // the process's peak resident memory when the run ended
 
   bool IsComplete() const { return termination == Termination::kCompleted; }
   std::string BriefReport() const;  // one line

@@ -1,5 +1,7 @@
 #include "core/solve/sparse_cholesky.h"
 
+#include <sys/resource.h>
+
 #include <dlfcn.h>
 #include <omp.h>
 #include <suitesparse/cholmod.h>
@@ -406,6 +408,12 @@ double AvailableMemoryBytes() {
   while (std::getline(meminfo, line))
     if (std::sscanf(line.c_str(), "MemAvailable: %lf kB", &kib) == 1) return kib * 1024;
   return std::numeric_limits<double>::infinity();
+}
+
+double PeakMemoryBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux reports KiB
 }
 
 void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {

@@ -70,5 +70,7 @@ class SparseCholesky {
 // The memory available to a new allocation [bytes] (Linux MemAvailable);
 // +∞ where that cannot be read.
 double AvailableMemoryBytes();
+// The most memory this process has held resident so far [bytes].
+double PeakMemoryBytes();
 
 }  // namespace drape
