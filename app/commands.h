@@ -32,6 +32,8 @@ void AddStudyCommand(CLI::App& app, CommandRunner& runner);
 void AddMaterialCommand(CLI::App& app, CommandRunner& runner);
 // Adds `render INPUT -o PNG …` and `animate RESULT -o MOVIE …` (need VTK).
 void AddRenderCommands(CLI::App& app, CommandRunner& runner);
+// Adds `front DIR [-o PNG]`: a study's speed–accuracy front (needs VTK).
+void AddFrontCommand(CLI::App& app, CommandRunner& runner);
 // Adds `export RESULT -o DIR --format …` (needs VTK).
 void AddExportCommand(CLI::App& app, CommandRunner& runner);
 

@@ -282,6 +282,24 @@ bool RunPending(const Study& study, const fs::path& dir, int jobs, bool quiet) {
   return !g_interrupted;
 }
 
+// Draws DIR/front.png with `drape front` (a program with VTK); returns the
+// line that says where it is, or why it is not.
+std::string DrawFront(const Study& study, const fs::path& dir) {
+  if (!study.reference) return "front: none (no reference run to measure errors against)";
+  const std::string command =
+      ShellQuoted(SelfExecutable().string()) + " front " + ShellQuoted(dir.string()) + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return "front: not drawn (cannot start drape front)";
+  std::string output;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+    return "front: " + (dir / "front.png").string();
+  const std::string first = output.substr(0, output.find('\n'));
+  return "front: not drawn: " + first;
+}
+
 int RunStudy(const StudyArgs& args) {
   Study study;
   fs::path dir;
@@ -329,13 +347,14 @@ int RunStudy(const StudyArgs& args) {
     std::cerr << "drape study: " << e.what() << "\n";
     return 1;
   }
+  const std::string front = DrawFront(study, dir);
   std::map<std::string, int> counts;
   for (const StudyRow& row : rows) ++counts[row.status];
   if (!args.quiet) {
     std::cerr << (complete ? "drape study: " : "drape study: interrupted: ") << rows.size()
               << " runs:";
     for (const auto& [status, n] : counts) std::cerr << " " << n << " " << status;
-    std::cerr << "\n  table: " << (dir / "study.csv").string() << "\n";
+    std::cerr << "\n  table: " << (dir / "study.csv").string() << "\n  " << front << "\n";
   }
   return complete ? 0 : 130;
 }

@@ -140,6 +140,24 @@ std::vector<StudyRow> CollectStudy(const Study& study, const fs::path& study_dir
   return rows;
 }
 
+std::vector<bool> ParetoFront(const std::vector<StudyRow>& rows) {
+  auto measured = [](const StudyRow& r) {
+    return r.status == "converged" && r.solve_s && r.max_node_error;
+  };
+  std::vector<bool> front(rows.size(), false);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (!measured(rows[i])) continue;
+    front[i] = true;
+    for (size_t j = 0; j < rows.size() && front[i]; ++j) {
+      if (j == i || !measured(rows[j])) continue;
+      const double ti = *rows[i].solve_s, ei = *rows[i].max_node_error;
+      const double tj = *rows[j].solve_s, ej = *rows[j].max_node_error;
+      if (tj <= ti && ej <= ei && (tj < ti || ej < ei)) front[i] = false;
+    }
+  }
+  return front;
+}
+
 void WriteStudyCsv(const Study& study, const std::vector<StudyRow>& rows, const fs::path& file) {
   // Probe columns: every probe any run reports, in order of first appearance.
   std::vector<std::string> probes;

@@ -47,6 +47,12 @@ struct StudyRow {
 // that converged.
 std::vector<StudyRow> CollectStudy(const Study& study, const std::filesystem::path& study_dir);
 
+// The rows no other beats on both time and error (the Pareto front): true
+// for each row that converged with both numbers and is not dominated — no
+// other such row as fast and as accurate and better in one. The reference
+// (no error) is never on it.
+std::vector<bool> ParetoFront(const std::vector<StudyRow>& rows);
+
 // Writes the rows as CSV (header first; an empty cell where a number does
 // not exist, never NaN). Throws std::runtime_error when it cannot write.
 void WriteStudyCsv(const Study& study,

@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "core/io/scene_reader.h"
 #include "core/io/study_file.h"
+#include "core/io/study_table.h"
 #include "core/model/scene_error.h"
 #include "support/test_paths.h"
 
@@ -150,6 +152,26 @@ TEST_F(StudyFile, ABadStudyIsOneMessageNamingItsKey) {
   EXPECT_NE(
       ErrorOf(R"("grid": {"solver.tolerance": [1e-3]}, "time_limit_s": 0)").find("time_limit_s"),
       std::string::npos);
+}
+
+// The Pareto front: a run is on it unless another is as fast and as
+// accurate and better in one; runs without both numbers never are.
+TEST(StudyTable, TheFrontIsTheRunsNoOtherBeatsOnBoth) {
+  auto row = [](double time, std::optional<double> error, std::string status = "converged") {
+    StudyRow r;
+    r.status = std::move(status);
+    r.solve_s = time;
+    r.max_node_error = error;
+    return r;
+  };
+  const std::vector<StudyRow> rows = {row(1, 1e-2),
+                                      row(2, 1e-3),
+                                      row(3, 1e-3),  // as accurate as the second, slower
+                                      row(2, 1e-3),  // the second's twin: neither beats the other
+                                      row(10, 1e-5),
+                                      row(0.5, 1e-1, "failed"),
+                                      row(20, std::nullopt)};  // the reference
+  EXPECT_EQ(ParetoFront(rows), (std::vector<bool>{true, true, false, true, true, false, false}));
 }
 
 }  // namespace

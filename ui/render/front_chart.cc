@@ -1,0 +1,181 @@
+#include "ui/render/front_chart.h"
+
+#include <vtkAxis.h>
+#include <vtkBrush.h>
+#include <vtkChartXY.h>
+#include <vtkContext2D.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPNGWriter.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkPlotLine.h>
+#include <vtkPlotPoints.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace drape {
+namespace {
+
+// The points drawn by vtkPlotPoints, each with its label beside it. The
+// chart paints a plot in data coordinates; text is anchored there and drawn
+// in pixels.
+class LabelledPoints : public vtkPlotPoints {
+ public:
+  static LabelledPoints* New();
+  vtkTypeMacro(LabelledPoints, vtkPlotPoints);
+
+  void SetLabels(std::vector<std::array<float, 2>> at, std::vector<std::string> labels) {
+    at_ = std::move(at);
+    labels_ = std::move(labels);
+  }
+
+  bool Paint(vtkContext2D* painter) override {
+    if (!Superclass::Paint(painter)) return false;
+    vtkNew<vtkTextProperty> text;
+    text->SetFontSize(13);
+    text->SetColor(0.15, 0.15, 0.15);
+    text->SetJustificationToLeft();
+    // Above and below in turn, so that neighbours (runs that differ in a
+    // key that changes little) stay readable.
+    for (size_t i = 0; i < at_.size(); ++i) {
+      if (i % 2)
+        text->SetVerticalJustificationToTop();
+      else
+        text->SetVerticalJustificationToBottom();
+      painter->ApplyTextProp(text);
+      painter->DrawString(at_[i][0], at_[i][1], ("  " + labels_[i]).c_str());
+    }
+    return true;
+  }
+
+ private:
+  std::vector<std::array<float, 2>> at_;
+  std::vector<std::string> labels_;
+};
+vtkStandardNewMacro(LabelledPoints);
+
+// Decades covering [lo, hi] (log10 values), as tick positions and labels.
+void DecadeTicks(vtkAxis* axis, double lo, double hi) {
+  const int first = static_cast<int>(std::floor(lo)), last = static_cast<int>(std::ceil(hi));
+  vtkNew<vtkDoubleArray> positions;
+  vtkNew<vtkStringArray> labels;
+  for (int k = first; k <= last; ++k) {
+    positions->InsertNextValue(k);
+    char text[16];
+    std::snprintf(text, sizeof text, "1e%d", k);
+    labels->InsertNextValue(text);
+  }
+  axis->SetCustomTickPositions(positions, labels);
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetRange(first, std::max(last, first + 1));
+}
+
+vtkSmartPointer<vtkTable> TableOf(const std::vector<std::array<float, 2>>& xy) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkFloatArray> x, y;
+  x->SetName("log10 time");
+  y->SetName("log10 error");
+  for (const auto& p : xy) {
+    x->InsertNextValue(p[0]);
+    y->InsertNextValue(p[1]);
+  }
+  table->AddColumn(x);
+  table->AddColumn(y);
+  return table;
+}
+
+}  // namespace
+
+void WriteFrontChart(const std::vector<FrontPoint>& points,
+                     const FrontChartOptions& options,
+                     const std::filesystem::path& png) {
+  std::vector<std::array<float, 2>> all, front;
+  std::vector<std::string> labels;
+  for (const FrontPoint& p : points) {
+    if (!(p.time_s > 0 && p.error > 0 && std::isfinite(p.time_s) && std::isfinite(p.error)))
+      continue;
+    const std::array<float, 2> at{static_cast<float>(std::log10(p.time_s)),
+                                  static_cast<float>(std::log10(p.error))};
+    all.push_back(at);
+    labels.push_back(p.label);
+    if (p.on_front) front.push_back(at);
+  }
+  if (all.empty())
+    throw std::invalid_argument(
+        "no run has both a time and an error to draw (did the reference "
+        "converge?)");
+  std::sort(front.begin(), front.end());
+
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(options.width, options.height);
+  view->GetRenderWindow()->SetMultiSamples(0);
+  view->GetRenderer()->SetBackground(1, 1, 1);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(options.title);
+  chart->GetTitleProperties()->SetFontSize(18);
+
+  if (front.size() > 1) {
+    vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+    line->SetInputData(TableOf(front), 0, 1);
+    line->SetColor(0.85, 0.37, 0.01);  // the front, orange
+    line->SetWidth(2);
+  }
+  auto dots = vtkSmartPointer<LabelledPoints>::New();
+  dots->SetInputData(TableOf(all), 0, 1);
+  dots->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+  dots->SetMarkerSize(9);
+  dots->SetColor(0.12, 0.35, 0.65);
+  dots->SetLabels(all, labels);
+  chart->AddPlot(dots);
+
+  float x_lo = all[0][0], x_hi = x_lo, y_lo = all[0][1], y_hi = y_lo;
+  for (const auto& p : all) {
+    x_lo = std::min(x_lo, p[0]);
+    x_hi = std::max(x_hi, p[0]);
+    y_lo = std::min(y_lo, p[1]);
+    y_hi = std::max(y_hi, p[1]);
+  }
+  vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* y = chart->GetAxis(vtkAxis::LEFT);
+  x->SetTitle("run time (s)");
+  y->SetTitle(options.error_axis);
+  // A decade of room on the right for the labels.
+  DecadeTicks(x, x_lo, x_hi + 0.5);
+  DecadeTicks(y, y_lo, y_hi);
+  for (vtkAxis* a : {x, y}) {
+    a->GetTitleProperties()->SetFontSize(15);
+    a->GetLabelProperties()->SetFontSize(13);
+  }
+
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(view->GetRenderWindow());
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(png.string().c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  std::error_code ec;
+  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(png, ec))
+    throw std::runtime_error("cannot write the image " + png.string());
+}
+
+}  // namespace drape
