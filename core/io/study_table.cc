@@ -152,7 +152,10 @@ std::vector<bool> ParetoFront(const std::vector<StudyRow>& rows) {
       if (j == i || !measured(rows[j])) continue;
       const double ti = *rows[i].solve_s, ei = *rows[i].max_node_error;
       const double tj = *rows[j].solve_s, ej = *rows[j].max_node_error;
-      if (tj <= ti && ej <= ei && (tj < ti || ej < ei)) front[i] = false;
+      // Errors within 1 % are the same answer: a slower run that is 0.1 %
+      // nearer the reference buys nothing.
+      constexpr double kSame = 1.01;
+      if ((tj < ti && ej <= kSame * ei) || (tj <= ti && kSame * ej < ei)) front[i] = false;
     }
   }
   return front;

@@ -49,8 +49,9 @@ std::vector<StudyRow> CollectStudy(const Study& study, const std::filesystem::pa
 
 // The rows no other beats on both time and error (the Pareto front): true
 // for each row that converged with both numbers and is not dominated — no
-// other such row as fast and as accurate and better in one. The reference
-// (no error) is never on it.
+// other such row faster and as accurate, or as fast and more accurate,
+// errors within 1 % counting as equal. The reference (no error) is never
+// on it.
 std::vector<bool> ParetoFront(const std::vector<StudyRow>& rows);
 
 // Writes the rows as CSV (header first; an empty cell where a number does

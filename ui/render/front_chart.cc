@@ -21,6 +21,7 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkTransform2D.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -43,29 +44,76 @@ class LabelledPoints : public vtkPlotPoints {
     at_ = std::move(at);
     labels_ = std::move(labels);
   }
+  // The picture's size [px]: a label must stay inside it, clear of the
+  // left axis.
+  void SetCanvas(int width, int height) {
+    width_ = width;
+    height_ = height;
+  }
 
+  // Each label goes where it overlaps no label placed before it: beside
+  // its point, then further above or below (runs that differ in a key that
+  // changes little sit on top of each other). Placed in pixels, under the
+  // chart's data-to-pixel transform.
   bool Paint(vtkContext2D* painter) override {
     if (!Superclass::Paint(painter)) return false;
     vtkNew<vtkTextProperty> text;
     text->SetFontSize(13);
     text->SetColor(0.15, 0.15, 0.15);
-    text->SetJustificationToLeft();
-    // Above and below in turn, so that neighbours (runs that differ in a
-    // key that changes little) stay readable.
+    text->SetVerticalJustificationToCentered();
+    std::vector<std::array<double, 2>> pixels(at_.size());
     for (size_t i = 0; i < at_.size(); ++i) {
-      if (i % 2)
-        text->SetVerticalJustificationToTop();
-      else
-        text->SetVerticalJustificationToBottom();
-      painter->ApplyTextProp(text);
-      painter->DrawString(at_[i][0], at_[i][1], ("  " + labels_[i]).c_str());
+      const float in[2] = {at_[i][0], at_[i][1]};
+      float out[2];
+      painter->GetTransform()->TransformPoints(in, out, 1);
+      pixels[i] = {out[0], out[1]};
     }
+    painter->PushMatrix();
+    vtkNew<vtkTransform2D> identity;
+    painter->SetTransform(identity);
+    struct Box {
+      double x0, y0, x1, y1;
+    };
+    std::vector<Box> placed;
+    for (const auto& p : pixels) placed.push_back({p[0] - 5, p[1] - 5, p[0] + 5, p[1] + 5});
+    constexpr double kCharWidth = 7.2, kLineHeight = 15;
+    for (size_t i = 0; i < at_.size(); ++i) {
+      const double width = kCharWidth * labels_[i].size();
+      Box best{};
+      double best_overlap = 1e300;
+      for (int k = 0; k < 16 && best_overlap > 0; ++k) {
+        const bool right = k % 4 < 2;  // the label right of its point, or left
+        const double dy = (k % 2 ? -1 : 1) * kLineHeight * (0.5 + k / 4);
+        const double x0 = right ? pixels[i][0] + 8 : pixels[i][0] - 8 - width;
+        const Box box{x0,
+                      pixels[i][1] + dy - kLineHeight / 2,
+                      x0 + width,
+                      pixels[i][1] + dy + kLineHeight / 2};
+        // Outside the picture (or over the left axis's numbers) is worse
+        // than any overlap.
+        double overlap =
+            box.x0 < 70 || box.x1 > width_ || box.y0 < 0 || box.y1 > height_ ? 1e12 : 0;
+        for (const Box& o : placed)
+          overlap += std::max(0.0, std::min(box.x1, o.x1) - std::max(box.x0, o.x0)) *
+                     std::max(0.0, std::min(box.y1, o.y1) - std::max(box.y0, o.y0));
+        if (overlap < best_overlap) {
+          best_overlap = overlap;
+          best = box;
+        }
+      }
+      placed.push_back(best);
+      text->SetJustificationToLeft();
+      painter->ApplyTextProp(text);
+      painter->DrawString(best.x0, (best.y0 + best.y1) / 2, labels_[i].c_str());
+    }
+    painter->PopMatrix();
     return true;
   }
 
  private:
   std::vector<std::array<float, 2>> at_;
   std::vector<std::string> labels_;
+  int width_ = 0, height_ = 0;
 };
 vtkStandardNewMacro(LabelledPoints);
 
@@ -143,6 +191,7 @@ void WriteFrontChart(const std::vector<FrontPoint>& points,
   dots->SetMarkerSize(9);
   dots->SetColor(0.12, 0.35, 0.65);
   dots->SetLabels(all, labels);
+  dots->SetCanvas(options.width, options.height);
   chart->AddPlot(dots);
 
   float x_lo = all[0][0], x_hi = x_lo, y_lo = all[0][1], y_hi = y_lo;
