@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/commands.h"
@@ -15,6 +16,7 @@
 #include "core/io/result_writer.h"
 #include "core/io/scene_reader.h"
 #include "core/model/scene_error.h"
+#include "core/solve/error_estimate.h"
 #include "core/solve/shell_solver.h"
 
 namespace drape::app {
@@ -27,7 +29,8 @@ struct RunArgs {
   bool verbose = false;
   int threads = 0;
   int render_every = 0;
-  double time_limit_s = 0;  // 0: the scene's solver.max_wall_s
+  double time_limit_s = 0;      // 0: the scene's solver.max_wall_s
+  bool error_estimate = false;  // or the scene's solver.error_estimate
 };
 
 CancellationToken* g_cancel = nullptr;
@@ -133,8 +136,10 @@ int RunRun(const RunArgs& args) {
 
   ProgressLine progress(!args.quiet && isatty(STDERR_FILENO));
   int last_pivots = 0;
+  std::vector<NamedVector> last_probes;
   StepObserver record = [&](const StepState& s) {
     writer->AddStep(s);
+    last_probes = s.probes;
     progress.Show(s, s.negative_pivots != last_pivots);
     last_pivots = s.negative_pivots;
     return StepDecision::kContinue;
@@ -151,6 +156,12 @@ int RunRun(const RunArgs& args) {
   }
   SolveSummary summary = solver->Solve(observers, &cancel);
   progress.Clear();
+  std::optional<ErrorEstimate> estimate;
+  if ((args.error_estimate || scene.solver.error_estimate) && summary.IsComplete()) {
+    if (!args.quiet) std::cerr << "  estimating the error on meshes 2 and 4 times coarser\n";
+    estimate = EstimateError(scene, SolverOptions::FromScene(scene.solver), last_probes, &cancel);
+    writer->SetErrorEstimate(*estimate);
+  }
   try {
     writer->Finish(summary);
   } catch (const std::exception& e) {
@@ -164,6 +175,7 @@ int RunRun(const RunArgs& args) {
       for (const auto& warning : summary.warnings) std::cerr << "  warning: " << warning << "\n";
       for (const auto& note : summary.notes) std::cerr << "  note: " << note << "\n";
     }
+    if (estimate) std::cerr << "  " << Describe(*estimate) << "\n";
     std::cerr << "  results: " << (writer->directory() / kResultFileName).string() << "\n";
   }
   return ExitCode(summary.termination);
@@ -195,6 +207,10 @@ void AddRunCommand(CLI::App& app, CommandRunner& runner) {
                   "Stop the run (failed, every converged step kept) after this many seconds; "
                   "overrides solver.max_wall_s")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--error-estimate",
+                args->error_estimate,
+                "Also solve on meshes 2 and 4 times coarser and estimate each probe's error "
+                "(Richardson; solver.error_estimate)");
   cmd->add_option("--render-every",
                   args->render_every,
                   "Render every N-th converged step to DIR/frames/step_NNNN.png while solving")

@@ -9,6 +9,7 @@
 
 #include "core/io/scene_writer.h"
 #include "core/io/state_file.h"
+#include "core/solve/error_estimate.h"
 
 namespace drape {
 namespace {
@@ -68,6 +69,7 @@ struct ResultWriter::Impl {
   // was last written and how long that took.
   std::chrono::steady_clock::time_point last_written;
   double write_s = 0;
+  json error_estimate;  // null until set
 };
 
 ResultWriter::ResultWriter(const std::filesystem::path& directory,
@@ -258,9 +260,24 @@ nlohmann::json ResultWriter::Document(const SolveSummary& summary,
   r["counts"] = {{"steps", summary.steps},
                  {"iterations", summary.iterations},
                  {"factorizations", summary.factorizations}};
+  if (!impl_->error_estimate.is_null()) r["error_estimate"] = impl_->error_estimate;
   r["states_file"] = kStatesFileName;
   r["scene_resolved"] = impl_->scene_resolved;
   return r;
+}
+
+void ResultWriter::SetErrorEstimate(const ErrorEstimate& e) {
+  json j = {
+      {"order", e.order}, {"in_asymptotic_range", e.in_asymptotic_range}, {"meshes", e.meshes}};
+  if (!e.in_asymptotic_range) j["reason"] = e.reason;
+  json probes = json::object();
+  for (const ProbeErrorEstimate& p : e.probes)
+    probes[p.name] = {
+        {"error", p.error},
+        {"gci", p.gci},
+        {"extrapolated", {p.extrapolated.x(), p.extrapolated.y(), p.extrapolated.z()}}};
+  j["probes"] = std::move(probes);
+  impl_->error_estimate = std::move(j);
 }
 
 void ResultWriter::Write(const nlohmann::json& r) const {

@@ -20,6 +20,8 @@
 
 namespace drape {
 
+struct ErrorEstimate;
+
 inline constexpr int kResultFormatVersion = 1;
 inline constexpr char kStatesFileName[] = "states.bin";
 inline constexpr char kResultFileName[] = "result.json";
@@ -39,6 +41,8 @@ class ResultWriter {
 
   // Writes result.json with the status of `summary`.
   void Finish(const SolveSummary& summary);
+  // Adds `error_estimate` to result.json (call before Finish).
+  void SetErrorEstimate(const ErrorEstimate& estimate);
 
   const std::filesystem::path& directory() const { return directory_; }
 

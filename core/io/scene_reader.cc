@@ -751,7 +751,8 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
                   "psi",
                   "branching",
                   "sequencing",
-                  "max_wall_s"});
+                  "max_wall_s",
+                  "error_estimate"});
   SolverSettings s;
   auto fraction = [&](const char* key, double& out) {
     if (auto v = c.Find(key)) {
@@ -774,6 +775,7 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("max_step_cuts", s.max_step_cuts, 0);
   count("sequencing", s.sequencing, 1);
   if (auto a = c.Find("acceleration")) s.acceleration = a->Boolean();
+  if (auto e = c.Find("error_estimate")) s.error_estimate = e->Boolean();
   if (auto p = c.Find("psi")) s.psi = p->PositiveQuantity(dim::kLength);
   if (auto w = c.Find("max_wall_s")) {
     s.max_wall_s = w->Number();

@@ -187,6 +187,7 @@ json ToJson(const SolverSettings& s) {
   if (s.psi) j["psi"] = *s.psi;
   if (s.sequencing > 1) j["sequencing"] = s.sequencing;
   if (s.max_wall_s) j["max_wall_s"] = *s.max_wall_s;
+  if (s.error_estimate) j["error_estimate"] = true;
   return j;
 }
 

@@ -290,6 +290,9 @@ struct SolverSettings {
   // Wall-clock limit of a run [s]: past it the run stops (failed), keeping
   // every converged step. Absent: none.
   std::optional<double> max_wall_s;
+  // After a converged run: solve the scene on meshes 2 and 4 times coarser
+  // and estimate the error of its probes (core/solve/error_estimate.h).
+  bool error_estimate = false;
   friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 
