@@ -61,6 +61,12 @@ StudyRow ReadRow(const fs::path& study_dir, const StudyRun& run) {
   row.steps = Number<int>(r, "counts", "steps");
   row.iterations = Number<int>(r, "counts", "iterations");
   row.factorizations = Number<int>(r, "counts", "factorizations");
+  if (r.contains("error_estimate") && r["error_estimate"].value("in_asymptotic_range", false)) {
+    double largest = 0;
+    for (const auto& [name, p] : r["error_estimate"]["probes"].items())
+      largest = std::max(largest, p.value("error", 0.0));
+    row.estimated_error = largest;
+  }
   if (r.contains("final") && r["final"].contains("probes"))
     for (const auto& [name, p] : r["final"]["probes"].items())
       if (p.is_array() && p.size() == 3)
@@ -176,7 +182,7 @@ void WriteStudyCsv(const Study& study, const std::vector<StudyRow>& rows, const 
     out << ",status,wall_s,steps,iterations,factorizations,peak_memory_bytes";
     for (const std::string& p : probes)
       out << "," << p << "_x_m," << p << "_y_m," << p << "_z_m," << p << "_error_m";
-    out << ",max_node_error_m\n";
+    out << ",max_node_error_m,estimated_error_m\n";
     for (const StudyRow& row : rows) {
       out << row.run.name;
       for (const std::string& key : study.keys) {
@@ -196,7 +202,7 @@ void WriteStudyCsv(const Study& study, const std::vector<StudyRow>& rows, const 
           out << "," << (found ? Cell(std::optional<double>(found->position[c])) : "");
         out << "," << (found ? Cell(found->error) : "");
       }
-      out << "," << Cell(row.max_node_error) << "\n";
+      out << "," << Cell(row.max_node_error) << "," << Cell(row.estimated_error) << "\n";
     }
     if (!out) throw std::runtime_error("cannot write '" + temporary.string() + "'");
   }

@@ -40,6 +40,8 @@ struct StudyRow {
   // The largest distance between a node's final position and the same
   // material point on the reference (interpolated where meshes differ) [m].
   std::optional<double> max_node_error;
+  // The run's own estimate (solver.error_estimate): its largest probe error.
+  std::optional<double> estimated_error;
 };
 
 // Reads every run's result (and the reference's); a run without one is a
