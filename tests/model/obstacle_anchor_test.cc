@@ -12,9 +12,9 @@ namespace {
 void ExpectMovedRigidly(const Obstacle& o, const Eigen::Vector3d& by) {
   const auto before = MakeObstacleGeometry(o, ".");
   const auto after = MakeObstacleGeometry(Translated(o, by), ".");
-  for (const Eigen::Vector3d x : {Eigen::Vector3d(0.3, -0.2, 0.1),
-                                  Eigen::Vector3d(0.0, 0.0, 0.0),
-                                  Eigen::Vector3d(-0.05, 0.12, -0.4)})
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0.3, -0.2, 0.1),
+                                   Eigen::Vector3d(0.0, 0.0, 0.0),
+                                   Eigen::Vector3d(-0.05, 0.12, -0.4)})
     EXPECT_NEAR(after->Query(x + by).distance, before->Query(x).distance, 1e-14) << o.name;
   EXPECT_LT((*ObstacleAnchor(Translated(o, by)) - *ObstacleAnchor(o) - by).norm(), 1e-15);
 }

@@ -22,6 +22,7 @@
 
 #include "core/mechanics/moment_curvature.h"
 #include "core/solve/shell_solver.h"
+#include "support/rk4.h"
 #include "support/strip_scene.h"
 
 namespace drape {
@@ -76,20 +77,12 @@ ElasticaEnd Shoot(const MomentCurvatureLaw& law, double w, double length, double
                  std::cos(y[0]),
                  -std::sin(y[0])};
   };
-  auto add = [](const State& y, double h, const State& d) {
-    return State{y[0] + h * d[0], y[1] + h * d[1], y[2] + h * d[2], y[3] + h * d[3]};
-  };
   State y{0.0, m0, 0.0, 0.0};
   const double h = length / steps;
   double max_k = 0;
   for (int i = 0; i < steps; ++i) {
-    const double s = i * h;
-    const State k1 = rate(s, y);
-    const State k2 = rate(s + h / 2, add(y, h / 2, k1));
-    const State k3 = rate(s + h / 2, add(y, h / 2, k2));
-    const State k4 = rate(s + h, add(y, h, k3));
-    for (int j = 0; j < 4; ++j) y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-    max_k = std::max(max_k, k1[0]);
+    max_k = std::max(max_k, rate(i * h, y)[0]);
+    y = test::Rk4Step(rate, i * h, y, h);
   }
   return {y[1], y[2], y[3], max_k};
 }

@@ -13,6 +13,8 @@
 #include <array>
 #include <cmath>
 
+#include "support/rk4.h"
+
 namespace drape::test {
 
 struct ElasticaEnd {
@@ -28,19 +30,11 @@ inline ElasticaEnd Shoot(double alpha, double k, int steps, bool* bent_back) {
   auto rate = [alpha](double s, const State& y) {
     return State{y[1], -alpha * (1 - s) * std::cos(y[0]), std::cos(y[0]), -std::sin(y[0])};
   };
-  auto add = [](const State& y, double h, const State& dy) {
-    return State{y[0] + h * dy[0], y[1] + h * dy[1], y[2] + h * dy[2], y[3] + h * dy[3]};
-  };
   State y{0.0, k, 0.0, 0.0};
   const double h = 1.0 / steps;
   *bent_back = false;
   for (int i = 0; i < steps; ++i) {
-    const double s = i * h;
-    const State k1 = rate(s, y);
-    const State k2 = rate(s + h / 2, add(y, h / 2, k1));
-    const State k3 = rate(s + h / 2, add(y, h / 2, k2));
-    const State k4 = rate(s + h, add(y, h, k3));
-    for (int j = 0; j < 4; ++j) y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+    y = Rk4Step(rate, i * h, y, h);
     if (y[1] < 0) *bent_back = true;
   }
   return {k, y[0], y[2], y[3]};
