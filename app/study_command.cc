@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -130,6 +131,14 @@ std::vector<std::string> PendingRuns(const Study& study, const fs::path& dir) {
 int Emit(const Study& study, const fs::path& dir, const std::string& engine) {
   const std::vector<std::string> pending = PendingRuns(study, dir);
   const fs::path file = dir / (engine == "slurm" ? "jobs.slurm" : "jobs.txt");
+  if (pending.empty()) {
+    // An empty job array is not a job array.
+    fs::remove(file);
+    if (engine == "parallel") std::ofstream{file};
+    std::cerr << "drape study: every run is done; tabulate them with drape study "
+              << ShellQuoted(dir.string()) << " --collect\n";
+    return 0;
+  }
   std::ofstream out(file);
   if (engine == "slurm") {
     out << "#!/bin/bash\n"
@@ -137,7 +146,7 @@ int Emit(const Study& study, const fs::path& dir, const std::string& engine) {
         << "#   " << SelfExecutable().string() << " study " << ShellQuoted(dir.string())
         << " --collect\n"
         << "#SBATCH --job-name=drape-study\n"
-        << "#SBATCH --array=0-" << (pending.empty() ? 0 : pending.size() - 1) << "\n"
+        << "#SBATCH --array=0-" << pending.size() - 1 << "\n"
         << "#SBATCH --cpus-per-task=1\n"
         << "#SBATCH --output=" << (dir / "runs" / "slurm-%a.log").string() << "\n"
         << "runs=(";
