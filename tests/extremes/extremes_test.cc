@@ -212,7 +212,7 @@ Stage MoveStage(const std::string& gripper, Path path, double increment) {
 }
 
 // Kawabata data of a linear law M = B K over a full KES cycle, with
-// relative noise `noise` on M (seeded), in KES units.
+// relative noise `noise` on M (seeded), in SI units (the header says so).
 void WriteKawabata(const fs::path& file, double rigidity, double noise, int points_per_branch) {
   std::ofstream out(file);
   out << "curvature (1/m),moment (N*m/m)\n";
