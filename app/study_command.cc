@@ -53,10 +53,17 @@ extern "C" void OnStudyInterrupt(int) {
   g_interrupted = true;
 }
 
+// This program, to start the runs with. A rebuild or reinstall while a
+// study goes on replaces the file: Linux then names the old one
+// "… (deleted)", and the runs start the new one at the same path.
 fs::path SelfExecutable() {
   std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path("drape") : self;
+  std::string self = fs::read_symlink("/proc/self/exe", ec).string();
+  if (ec) return "drape";
+  const std::string deleted = " (deleted)";
+  if (self.size() > deleted.size() && self.ends_with(deleted))
+    self.resize(self.size() - deleted.size());
+  return self;
 }
 
 // The study kept in its folder, its scene path made absolute, so that
