@@ -198,12 +198,11 @@ TEST_F(StudyCli, CtrlCKeepsWhatFinishedAndARerunCompletes) {
   for (size_t r = 1; r < rows.size(); ++r)
     converged += rows[r][Column(rows[0], "status")] == "converged";
   EXPECT_GE(converged, 1);
+  // The four runs left take tens of milliseconds each (process start
+  // included); the signal comes within 5 ms of the reference's end.
   std::printf("interrupted with exit code %d after %d of 5 runs\n", code, converged);
-  if (code == 130) {
-    EXPECT_LT(converged, 5);
-  } else {
-    EXPECT_EQ(code, 0);  // it had finished before the signal
-  }
+  EXPECT_EQ(code, 130);
+  EXPECT_LT(converged, 5);
   const test::CommandResult rerun =
       test::RunDrape("study '" + (dir_ / "study.json").string() + "' -o '" + out.string() + "'");
   ASSERT_EQ(rerun.exit_code, 0) << rerun.output;
