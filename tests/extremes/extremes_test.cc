@@ -167,16 +167,22 @@ Scene PeirceStrip(test::StripSpec spec,
   return scene;
 }
 
-void PeirceChecks(const Scene& scene, const CaseRun& run, double within = 0.005) {
+// 1e-3 L: four times the largest error a case measured (6.4e-4 L at h = 5 mm;
+// the 40-element strip's own is 2.3e-4 L), far below what locking, a wrong
+// branch or a half-converged state would leave.
+void PeirceChecks(const Scene& scene, const CaseRun& run, double within = 1e-3) {
   ExpectElasticaTip(run, 0.2, kPeirceAlpha, within);
   ExpectForceBalance(scene, run);
 }
 
-ExtremeCase Peirce(std::string name, test::StripSpec spec, double poisson = 0) {
+ExtremeCase Peirce(std::string name,
+                   test::StripSpec spec,
+                   double poisson = 0,
+                   double within = 1e-3) {
   return Converges(
       std::move(name),
       [spec, poisson](const fs::path&) { return PeirceStrip(spec, poisson); },
-      [](const Scene& s, const CaseRun& r) { PeirceChecks(s, r); });
+      [within](const Scene& s, const CaseRun& r) { PeirceChecks(s, r, within); });
 }
 
 ExtremeCase PeirceWithSolver(std::string name,
@@ -238,7 +244,9 @@ std::vector<ExtremeCase> Cases() {
   cases.push_back(Peirce("thickness_5e-3_m", {0.2, 0.01, 5e-3, 1e6, 40}));
   cases.push_back(Peirce("modulus_1e4_Pa", {0.2, 0.01, 5e-4, 1e4, 40}));
   cases.push_back(Peirce("modulus_1e10_Pa", {0.2, 0.01, 5e-4, 1e10, 40}));
-  cases.push_back(Peirce("poisson_0_49", {0.2, 0.002, 5e-4, 1e6, 40}, 0.49));
+  // A 2 mm strip is a beam only nearly: its anticlastic curvature is not
+  // wholly free (measured 3.5e-3 L from the beam's elastica).
+  cases.push_back(Peirce("poisson_0_49", {0.2, 0.002, 5e-4, 1e6, 40}, 0.49, 5e-3));
   // Needle elements: 5 mm along the strip, 100 mm across it.
   cases.push_back(Peirce("aspect_ratio_20", {0.2, 0.1, 5e-4, 1e6, 40}));
 
@@ -304,9 +312,10 @@ std::vector<ExtremeCase> Cases() {
       [](const Scene&, const CaseRun& r) {
         for (const json& step : r.result["steps"])
           EXPECT_LE(step["residual_ratio"].get<double>(), 0.5);
-        // Half the residual left: the tip is still within 5 % of the strip
-        // of the elastica (measured 1.6e-2).
-        ExpectElasticaTip(r, 0.2, kPeirceAlpha, 0.05);
+        // Up to half the residual left in a step, yet the last steps
+        // converge further than asked: the tip within 2e-3 L of the
+        // elastica (measured 7.0e-4 L, against 2.3e-4 L at 1e-5).
+        ExpectElasticaTip(r, 0.2, kPeirceAlpha, 2e-3);
       }));
 
   // Contact penalties: a sheet lying on a table under its weight sinks by
