@@ -16,6 +16,7 @@
 #include "core/io/result_writer.h"
 #include "core/io/scene_reader.h"
 #include "core/model/scene_error.h"
+#include "core/model/solver_preset.h"
 #include "core/solve/error_estimate.h"
 #include "core/solve/shell_solver.h"
 
@@ -31,6 +32,7 @@ struct RunArgs {
   int render_every = 0;
   double time_limit_s = 0;      // 0: the scene's solver.max_wall_s
   bool error_estimate = false;  // or the scene's solver.error_estimate
+  std::string preset;           // empty: the scene's solver settings
 };
 
 CancellationToken* g_cancel = nullptr;
@@ -118,6 +120,7 @@ int RunRun(const RunArgs& args) {
   std::unique_ptr<ShellSolver> solver;
   try {
     scene = ReadScene(args.scene);
+    if (!args.preset.empty()) scene.solver = WithPreset(scene.solver, *PresetNamed(args.preset));
     SolverOptions options = SolverOptions::FromScene(scene.solver);
     options.threads = args.threads;
     if (args.time_limit_s > 0) options.max_wall_s = args.time_limit_s;
@@ -211,6 +214,14 @@ void AddRunCommand(CLI::App& app, CommandRunner& runner) {
                 args->error_estimate,
                 "Also solve on meshes 2 and 4 times coarser and estimate each probe's error "
                 "(Richardson; solver.error_estimate)");
+  std::vector<std::string> presets;
+  for (const PresetDefinition& p : PresetDefinitions()) presets.push_back(p.name);
+  cmd->add_option("--preset",
+                  args->preset,
+                  "Solve at this accuracy preset (solver.preset; overrides the scene's tolerance, "
+                  "N_p and mesh scale): draft = half the mesh at 1e-4, balanced = the scene's "
+                  "mesh at 1e-5, accurate = twice the mesh at 1e-7; N_p 6")
+      ->check(CLI::IsMember(presets));
   cmd->add_option("--render-every",
                   args->render_every,
                   "Render every N-th converged step to DIR/frames/step_NNNN.png while solving")

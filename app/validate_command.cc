@@ -14,6 +14,7 @@
 #include "core/model/node_selection.h"
 #include "core/model/obstacle_geometry.h"
 #include "core/model/scene_error.h"
+#include "core/model/solver_preset.h"
 
 namespace drape::app {
 namespace {
@@ -31,7 +32,13 @@ void PrintSummary(const std::string& file,
   if (!scene.name.empty()) std::cout << " \"" << scene.name << "\"";
   std::cout << "\n";
   std::cout << "  mesh        " << mesh.NodeCount() << " nodes, " << mesh.ElementCount()
-            << " elements, " << 5 * mesh.NodeCount() << " DOFs (5 per node)\n";
+            << " elements, " << 5 * mesh.NodeCount() << " DOFs (5 per node)";
+  if (scene.solver.mesh_scale != 1)
+    std::cout << ", fabric.mesh at solver.mesh_scale " << scene.solver.mesh_scale;
+  std::cout << "\n";
+  if (scene.solver.preset)
+    std::cout << "  preset      " << ToString(*scene.solver.preset) << ": "
+              << Definition(*scene.solver.preset).purpose << "\n";
   std::cout << "  stages      " << scene.stages.size() << ":";
   for (size_t i = 0; i < scene.stages.size(); ++i)
     std::cout << (i ? ", " : " ") << scene.stages[i].name << " (" << ToString(scene.stages[i].kind)
@@ -47,7 +54,7 @@ void PrintSummary(const std::string& file,
 int RunValidate(const ValidateArgs& args) {
   try {
     Scene scene = ReadScene(args.scene);
-    Mesh mesh = MeshFabric(scene.fabric);
+    Mesh mesh = MeshFabric(SceneOnSolvedMesh(scene).fabric);
     auto selections = ResolveSelections(scene, mesh);
     // Mesh obstacles are read and checked (closed, readable) here too.
     for (size_t i = 0; i < scene.obstacles.size(); ++i)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
@@ -12,6 +13,7 @@
 #include "core/io/material_library.h"
 #include "core/model/scene_error.h"
 #include "core/model/sequencing_check.h"
+#include "core/model/solver_preset.h"
 
 namespace drape {
 namespace {
@@ -137,7 +139,16 @@ Scene SceneParser::Read(const JsonCursor& root) {
   if (auto c = root.Find("solver")) scene.solver = ReadSolver(*c);
   scene.probes = ReadList<Probe>(root.Find("probes"), [&](auto& c) { return ReadProbe(c); });
   CheckStages(root, scene);
-  CheckSequencing(scene, scene.solver.sequencing);
+  try {
+    CheckSequencing(SceneOnSolvedMesh(scene), scene.solver.sequencing);
+  } catch (const SceneError& e) {
+    if (scene.solver.mesh_scale == 1) throw;
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "%g", scene.solver.mesh_scale);
+    throw SceneError(
+        e.where(),
+        e.message() + " (the mesh solved: fabric.mesh at solver.mesh_scale " + scale + ")");
+  }
   return scene;
 }
 
@@ -741,7 +752,9 @@ void SceneParser::CheckStages(const JsonCursor& root, const Scene& scene) {
 }
 
 SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
-  c.ExpectObject({"tolerance",
+  c.ExpectObject({"preset",
+                  "mesh_scale",
+                  "tolerance",
                   "displacement_tolerance",
                   "target_iterations",
                   "acceleration",
@@ -754,6 +767,23 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
                   "max_wall_s",
                   "error_estimate"});
   SolverSettings s;
+  // The preset first: the keys beside it override its values.
+  if (auto p = c.Find("preset")) {
+    const std::string name = p->String();
+    std::optional<SolverPreset> preset = PresetNamed(name);
+    if (!preset) {
+      std::string names;
+      for (const auto& d : PresetDefinitions())
+        names += std::string(names.empty() ? "" : ", ") + d.name;
+      p->Fail("'" + name + "' is not a preset; one of " + names);
+    }
+    s = WithPreset(s, *preset);
+  }
+  if (auto m = c.Find("mesh_scale")) {
+    s.mesh_scale = m->Number();
+    if (!(s.mesh_scale >= 0.1 && s.mesh_scale <= 10))
+      m->Fail("must lie in [0.1, 10], got " + std::to_string(s.mesh_scale));
+  }
   auto fraction = [&](const char* key, double& out) {
     if (auto v = c.Find(key)) {
       out = v->Number();

@@ -176,14 +176,18 @@ json ToJson(const Stage& s) {
 }
 
 json ToJson(const SolverSettings& s) {
-  json j{{"tolerance", s.tolerance},
-         {"displacement_tolerance", s.displacement_tolerance},
-         {"target_iterations", s.target_iterations},
-         {"acceleration", s.acceleration},
-         {"max_steps", s.max_steps},
-         {"max_iterations", s.max_iterations},
-         {"max_step_cuts", s.max_step_cuts},
-         {"branching", ToString(s.branching)}};
+  json j;
+  if (s.preset) j["preset"] = ToString(*s.preset);
+  // Written beside a preset even when 1: it overrides the preset's on reading.
+  if (s.preset || s.mesh_scale != 1) j["mesh_scale"] = s.mesh_scale;
+  j.update(json{{"tolerance", s.tolerance},
+                {"displacement_tolerance", s.displacement_tolerance},
+                {"target_iterations", s.target_iterations},
+                {"acceleration", s.acceleration},
+                {"max_steps", s.max_steps},
+                {"max_iterations", s.max_iterations},
+                {"max_step_cuts", s.max_step_cuts},
+                {"branching", ToString(s.branching)}});
   if (s.psi) j["psi"] = *s.psi;
   if (s.sequencing > 1) j["sequencing"] = s.sequencing;
   if (s.max_wall_s) j["max_wall_s"] = *s.max_wall_s;

@@ -274,7 +274,15 @@ enum class Branching {
   kFundamental,  // follow the primary path through (the paper's studies)
 };
 
+// Named accuracy settings (core/model/solver_preset.h).
+enum class SolverPreset { kDraft, kBalanced, kAccurate };
+
 struct SolverSettings {
+  // The preset the settings were based on; keys given beside it override it.
+  std::optional<SolverPreset> preset;
+  // The mesh the scene is solved on, in elements per direction relative to
+  // fabric.mesh (directions of one or two elements stay): a preset's density.
+  double mesh_scale = 1;
   double tolerance = 1e-5;               // ‖R‖/‖R₀‖
   double displacement_tolerance = 1e-8;  // stall: max|Δu| / the part's diagonal
   int target_iterations = 7;             // N_p
@@ -329,5 +337,6 @@ const char* ToString(Side side);
 const char* ToString(Interpolation interpolation);
 const char* ToString(ImperfectionPattern pattern);
 const char* ToString(Branching branching);
+const char* ToString(SolverPreset preset);  // core/model/solver_preset.cc
 
 }  // namespace drape

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/model/solver_preset.h"
+
 namespace drape {
 namespace {
 
@@ -120,10 +122,12 @@ std::optional<Scene> CoarsenedScene(const Scene& scene, int factor, std::string*
   return coarse;
 }
 
-ErrorEstimate EstimateError(const Scene& scene,
+ErrorEstimate EstimateError(const Scene& written,
                             const SolverOptions& options,
                             const std::vector<NamedVector>& fine,
                             CancellationToken* cancel) {
+  // Coarsened from the mesh that was solved, a preset's density applied.
+  const Scene scene = SceneOnSolvedMesh(written);
   ErrorEstimate failed;
   failed.meshes[0] = MeshName(scene);
   std::array<std::vector<Eigen::Vector3d>, 3> positions;

@@ -10,6 +10,7 @@
 #include "core/model/node_selection.h"
 #include "core/model/outline_geometry.h"
 #include "core/model/scene_error.h"
+#include "core/model/solver_preset.h"
 #include "core/model/vec3_eigen.h"
 #include "core/solve/material_section.h"
 
@@ -76,7 +77,7 @@ bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double&
 }
 
 ShellModel BuildShellModel(const Scene& scene) {
-  return BuildShellModel(scene, MeshFabric(scene.fabric));
+  return BuildShellModel(scene, MeshFabric(SceneOnSolvedMesh(scene).fabric));
 }
 
 ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {

@@ -13,6 +13,7 @@
 #endif
 
 #include "core/model/scene_error.h"
+#include "core/model/solver_preset.h"
 #include "core/solve/arc_length_stepper.h"
 #include "core/solve/branch_switch.h"
 #include "core/solve/contact_setup.h"
@@ -483,9 +484,10 @@ std::string ShellSolver::Impl::ContactHint() const {
   if (contact->stabilization() > 0 && contact->friction() == 0)
     // A hanging part slides off a frictionless form the way a chain runs off
     // a pulley: no stable rest exists for the path to reach.
-    hint += ". Nothing but frictionless contact holds the part (no support, no gripper): it can "
-            "slide off the obstacle, so it may have no stable rest; give contact.friction, or "
-            "hold it with a support";
+    hint +=
+        ". Nothing but frictionless contact holds the part (no support, no gripper): it can "
+        "slide off the obstacle, so it may have no stable rest; give contact.friction, or "
+        "hold it with a support";
   const double automatic = AutoPenalty(model);
   if (scene.contact && scene.contact->penalty && contact->penalty() > 3 * automatic) {
     char text[240];
@@ -508,7 +510,8 @@ std::string ShellSolver::Impl::WhatToChange(const Stage& spec, const StageSummar
     // barely resists the load (no bending, nothing holding the part) or the
     // load is far beyond it.
     return "not even a first step 2^" + std::to_string(options.max_step_cuts) +
-           " times smaller than " + key + ".initial_increment converged: the part barely resists "
+           " times smaller than " + key +
+           ".initial_increment converged: the part barely resists "
            "its load where it starts (material.bending, supports, grippers)" +
            ContactHint();
   return "the path turns or stiffens sharply here (contact, a snap, a fold): allow more "
@@ -900,7 +903,8 @@ bool ShellSolver::Impl::PassBifurcation(int index,
     Stop(Termination::kNoStableBranch,
          where + sw.failure +
              ". The primary path past it is unstable; solver.branching: fundamental follows "
-             "it anyway" + ContactHint());
+             "it anyway" +
+             ContactHint());
     return false;
   }
   if (sw.bifurcation) {
@@ -1011,14 +1015,16 @@ bool ShellSolver::Impl::RunStage(int index) {
 ShellSolver::ShellSolver(const Scene& scene, const SolverOptions& options)
     : ShellSolver(scene, BuildShellModel(scene), options) {}
 
+// The solver keeps the scene on the mesh it solves (a preset's density
+// applied), so that sequencing coarsens that mesh.
 ShellSolver::ShellSolver(const Scene& scene, ShellModel model, const SolverOptions& options)
-    : impl_(std::make_unique<Impl>(scene, std::move(model), options)) {
+    : impl_(std::make_unique<Impl>(SceneOnSolvedMesh(scene), std::move(model), options)) {
   if (impl_->model.supports.empty() && impl_->model.grippers.empty() && !impl_->contact)
     throw SceneError("supports",
                      "nothing holds the fabric: it is free to move as a rigid body; add a support "
                      "or a gripper");
   CheckHoldsDoNotConflict(scene, impl_->model);
-  CheckSequencing(scene, options.sequencing);
+  CheckSequencing(impl_->scene, options.sequencing);
 }
 
 ShellSolver::~ShellSolver() = default;

@@ -55,6 +55,43 @@ TEST(SceneReader, SequencingMustDivideTheMeshOfOneWeightStage) {
             "each way");
 }
 
+TEST(SceneReader, APresetIsABaseTheSolverKeysBesideItOverride) {
+  json doc = Minimal();
+  EXPECT_FALSE(SceneFromJson(doc).solver.preset.has_value());
+  EXPECT_EQ(SceneFromJson(doc).solver.mesh_scale, 1.0);
+  doc["solver"] = {{"preset", "accurate"}};
+  SolverSettings accurate = SceneFromJson(doc).solver;
+  ASSERT_TRUE(accurate.preset.has_value());
+  EXPECT_EQ(*accurate.preset, SolverPreset::kAccurate);
+  EXPECT_EQ(accurate.tolerance, 1e-7);
+  EXPECT_EQ(accurate.target_iterations, 6);
+  EXPECT_EQ(accurate.mesh_scale, 2.0);
+  // Keys beside the preset win, whatever their order in the file.
+  doc["solver"] = {{"tolerance", 1e-6}, {"preset", "draft"}, {"mesh_scale", 1}};
+  SolverSettings draft = SceneFromJson(doc).solver;
+  EXPECT_EQ(*draft.preset, SolverPreset::kDraft);
+  EXPECT_EQ(draft.tolerance, 1e-6);
+  EXPECT_EQ(draft.target_iterations, 6);
+  EXPECT_EQ(draft.mesh_scale, 1.0);
+  // Written and read again: the same settings, the preset's name kept.
+  EXPECT_EQ(SceneFromJson(SceneToJson(SceneFromJson(doc))).solver, draft);
+  doc["solver"] = {{"preset", "accurate"}};
+  EXPECT_EQ(SceneFromJson(SceneToJson(SceneFromJson(doc))).solver, accurate);
+  doc["solver"] = {{"preset", "fast"}};
+  EXPECT_EQ(ErrorOf(doc),
+            "solver.preset: 'fast' is not a preset; one of draft, balanced, accurate");
+  doc["solver"] = {{"mesh_scale", 20}};
+  EXPECT_EQ(ErrorOf(doc), "solver.mesh_scale: must lie in [0.1, 10], got 20.000000");
+  // Sequencing is checked on the mesh that is solved: 8 x 4 at half is 4 x 2.
+  doc["fabric"]["mesh"]["elements"] = {8, 4};
+  doc["solver"] = {{"sequencing", 2}};
+  EXPECT_EQ(SceneFromJson(doc).solver.sequencing, 2);
+  doc["solver"] = {{"sequencing", 2}, {"preset", "draft"}};
+  EXPECT_EQ(ErrorOf(doc),
+            "solver.sequencing: 2 must divide the mesh's 4 × 2 elements and leave at least 2 "
+            "each way (the mesh solved: fabric.mesh at solver.mesh_scale 0.5)");
+}
+
 TEST(SceneReader, WallClockLimitIsSecondsAboveZero) {
   json doc = Minimal();
   EXPECT_FALSE(SceneFromJson(doc).solver.max_wall_s.has_value());

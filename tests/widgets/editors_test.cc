@@ -636,15 +636,46 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   SceneDocument* doc = window.document();
   PropertyPanel* panel = window.properties();
   QComboBox* preset = panel->solverPreset();
+  // The strip fold's own settings are no preset.
+  EXPECT_EQ(preset->currentData().toString().toStdString(), "custom");
+  EXPECT_EQ(panel->meshInfo()->text().toStdString(), "243 nodes, 160 elements, 1215 DOFs");
   preset->setCurrentIndex(preset->findData("draft"));
   emit preset->activated(preset->currentIndex());
-  EXPECT_EQ(doc->scene().solver.tolerance, 1e-3);
-  EXPECT_EQ(panel->tolerance()->edit()->text().toStdString(), "0.001");
+  ASSERT_TRUE(doc->scene().solver.preset.has_value());
+  EXPECT_EQ(*doc->scene().solver.preset, SolverPreset::kDraft);
+  EXPECT_EQ(doc->scene().solver.tolerance, 1e-4);
+  EXPECT_EQ(doc->scene().solver.target_iterations, 6);
+  EXPECT_EQ(doc->scene().solver.mesh_scale, 0.5);
+  EXPECT_EQ(panel->tolerance()->edit()->text().toStdString(), "0.0001");
+  // Half the 80 x 2 strip's elements along it; its width of two stays: 40 x 2.
+  EXPECT_EQ(panel->meshInfo()->text().toStdString(),
+            "123 nodes, 80 elements, 615 DOFs (solved at 0.5 × these counts: accuracy draft)");
+  EXPECT_EQ(doc->scene().fabric.mesh.elements, (std::array<int, 2>{80, 2}));
+  // Undo brings the scene's own settings back in one step.
+  doc->undoStack()->undo();
+  EXPECT_FALSE(doc->scene().solver.preset.has_value());
+  EXPECT_EQ(doc->scene().solver.mesh_scale, 1.0);
+  EXPECT_EQ(doc->scene().solver.tolerance, 1e-6);
+  doc->undoStack()->redo();
+  // A preset's number changed by hand makes the settings custom; the mesh stays.
   QLineEdit* tolerance = panel->tolerance()->edit();
   tolerance->setText("1e-6");
   emit tolerance->editingFinished();
   EXPECT_EQ(doc->scene().solver.tolerance, 1e-6);
   EXPECT_EQ(preset->currentData().toString().toStdString(), "custom");
+  EXPECT_FALSE(doc->scene().solver.preset.has_value());
+  EXPECT_EQ(doc->scene().solver.mesh_scale, 0.5);
+  // "custom" from the menu: the scene's own mesh again.
+  preset->setCurrentIndex(preset->findData("custom"));
+  emit preset->activated(preset->currentIndex());
+  EXPECT_EQ(doc->scene().solver.mesh_scale, 1.0);
+  // The error estimate: off by default, an undoable switch.
+  EXPECT_FALSE(panel->errorEstimate()->isChecked());
+  panel->errorEstimate()->setChecked(true);
+  EXPECT_TRUE(doc->scene().solver.error_estimate);
+  doc->undoStack()->undo();
+  EXPECT_FALSE(doc->scene().solver.error_estimate);
+  EXPECT_FALSE(panel->errorEstimate()->isChecked());
   tolerance->setText("2");
   emit tolerance->editingFinished();
   EXPECT_EQ(panel->tolerance()->message().toStdString(), "must lie in (0, 1)");

@@ -1,5 +1,6 @@
 #include "ui/widgets/property_panel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -16,6 +17,7 @@
 
 #include "core/model/fabric_mesh.h"
 #include "core/model/overloaded.h"
+#include "core/model/solver_preset.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/typed_json.h"
@@ -89,14 +91,6 @@ QString NonNegative(double v) {
 QString Si(double v, const char* unit) {
   return QString("%1 %2").arg(v, 0, 'g', 6).arg(unit);
 }
-
-struct Preset {
-  const char* name;
-  double tolerance;
-  int target_iterations;
-};
-// Fast and rough to slow and tight; "balanced" is the scene reader's default.
-constexpr Preset kPresets[] = {{"draft", 1e-3, 10}, {"balanced", 1e-5, 7}, {"accurate", 1e-7, 5}};
 
 }  // namespace
 
@@ -257,11 +251,13 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   auto* solver = new QGroupBox("Solver", this);
   auto* solver_form = new QFormLayout(solver);
   preset_ = new QComboBox(solver);
-  for (const Preset& p : kPresets)
-    preset_->addItem(
-        QString("%1 (tolerance %2, N_p %3)").arg(p.name).arg(p.tolerance).arg(p.target_iterations),
-        p.name);
-  preset_->addItem("custom", "custom");
+  for (const PresetDefinition& p : PresetDefinitions())
+    preset_->addItem(QString("%1: %2").arg(p.name, p.purpose), p.name);
+  preset_->addItem("custom: the fields below, on the scene's mesh", "custom");
+  preset_->setToolTip(
+      "solver.preset: the mesh density, tolerance and N_p the measured speed–accuracy fronts "
+      "showed to be efficient (docs/speed-accuracy.md). A field changed below overrides the "
+      "preset's value");
   solver_form->addRow("accuracy", preset_);
   // The preset's numbers, and the run's limits, each its own field.
   tolerance_ = new QuantityField(
@@ -302,13 +298,28 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
       "real part takes, or follow the primary path through it (unstable past it; the paper's "
       "studies)");
   solver_form->addRow("at bifurcations", branching_);
+  error_estimate_ = new QCheckBox("on meshes 2 and 4 times coarser", solver);
+  error_estimate_->setToolTip(
+      "solver.error_estimate: after a converged run, solve again on meshes 2 and 4 times coarser "
+      "and estimate each probe's error (Richardson); costs about a third more");
+  solver_form->addRow("estimate the error", error_estimate_);
   layout->addWidget(solver);
+  connect(error_estimate_, &QCheckBox::toggled, this, [this](bool on) {
+    if (refreshing_ || on == document_->scene().solver.error_estimate) return;
+    Scene after = document_->scene();
+    after.solver.error_estimate = on;
+    document_->apply(on ? "estimate the error" : "no error estimate", after);
+  });
+  // A preset's number changed by hand: the settings are the user's own now
+  // (the menu says custom); the mesh stays as it was.
   connect(tolerance_, &QuantityField::committed, this, edit("tolerance", [](Scene& s, double v) {
             s.solver.tolerance = v;
+            s.solver.preset.reset();
           }));
   connect(target_iterations_, &QSpinBox::editingFinished, this, [this, edit] {
     edit("target iterations", [](Scene& s, double v) {
       s.solver.target_iterations = static_cast<int>(v);
+      s.solver.preset.reset();
     })(target_iterations_->value(), QString::number(target_iterations_->value()));
   });
   connect(max_steps_, &QSpinBox::editingFinished, this, [this, edit] {
@@ -336,11 +347,17 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
     document_->apply(QString("branching %1").arg(branching_->itemData(i).toString()), after);
   });
   connect(preset_, &QComboBox::activated, this, [this](int i) {
-    if (refreshing_ || i >= static_cast<int>(std::size(kPresets))) return;
+    if (refreshing_) return;
     Scene after = document_->scene();
-    after.solver.tolerance = kPresets[i].tolerance;
-    after.solver.target_iterations = kPresets[i].target_iterations;
-    document_->apply(QString("solver preset %1").arg(kPresets[i].name), after);
+    const auto presets = PresetDefinitions();
+    if (i < static_cast<int>(presets.size())) {
+      after.solver = WithPreset(after.solver, presets[i].preset);
+    } else {  // custom: the fields as they are, on the scene's own mesh
+      after.solver.preset.reset();
+      after.solver.mesh_scale = 1;
+    }
+    if (after.solver == document_->scene().solver) return;
+    document_->apply(QString("accuracy %1").arg(preset_->itemData(i).toString()), after);
   });
   layout->addStretch(1);
   connect(document_, &SceneDocument::changed, this, &PropertyPanel::refresh);
@@ -483,11 +500,16 @@ void PropertyPanel::refresh() {
   }
   // The count of the mesh the engine will make (Gmsh's for curved outlines).
   try {
-    const Mesh mesh = MeshFabric(s.fabric);
-    mesh_info_->setText(QString("%1 nodes, %2 elements, %3 DOFs")
-                            .arg(mesh.NodeCount())
-                            .arg(mesh.ElementCount())
-                            .arg(5 * mesh.NodeCount()));
+    const Mesh mesh = MeshFabric(SceneOnSolvedMesh(s).fabric);
+    QString info = QString("%1 nodes, %2 elements, %3 DOFs")
+                       .arg(mesh.NodeCount())
+                       .arg(mesh.ElementCount())
+                       .arg(5 * mesh.NodeCount());
+    if (s.solver.mesh_scale != 1)
+      info += QString(" (solved at %1 × these counts: accuracy %2)")
+                  .arg(s.solver.mesh_scale)
+                  .arg(s.solver.preset ? ToString(*s.solver.preset) : "mesh scale");
+    mesh_info_->setText(info);
   } catch (const std::exception& e) {
     mesh_info_->setText(QString::fromStdString(e.what()));
   }
@@ -511,12 +533,9 @@ void PropertyPanel::refresh() {
     g12_->setValue(orthotropic->g12, Si(orthotropic->g12, "Pa"));
   }
   angle_->setValue(s.material.angle_deg * M_PI / 180, QString("%1 deg").arg(s.material.angle_deg));
-  int preset = static_cast<int>(std::size(kPresets));
-  for (int i = 0; i < static_cast<int>(std::size(kPresets)); ++i)
-    if (s.solver.tolerance == kPresets[i].tolerance &&
-        s.solver.target_iterations == kPresets[i].target_iterations)
-      preset = i;
-  preset_->setCurrentIndex(preset);
+  preset_->setCurrentIndex(s.solver.preset ? static_cast<int>(*s.solver.preset)
+                                           : static_cast<int>(PresetDefinitions().size()));
+  error_estimate_->setChecked(s.solver.error_estimate);
   tolerance_->setValue(s.solver.tolerance, QString::number(s.solver.tolerance));
   target_iterations_->setValue(s.solver.target_iterations);
   max_steps_->setValue(s.solver.max_steps);

@@ -13,6 +13,7 @@
 
 #include "core/model/units.h"
 
+class QCheckBox;
 class QComboBox;
 class QFormLayout;
 class QLabel;
@@ -73,6 +74,7 @@ class PropertyPanel : public QWidget {
   QDoubleSpinBox* timeLimit() const { return time_limit_; }
   QComboBox* branching() const { return branching_; }
   QSpinBox* sequencing() const { return sequencing_; }
+  QCheckBox* errorEstimate() const { return error_estimate_; }
   QLabel* meshInfo() const { return mesh_info_; }
   QString fabricMessage() const;
   QString materialMessage() const;
@@ -121,6 +123,7 @@ class PropertyPanel : public QWidget {
   QuantityField* tolerance_;
   QSpinBox *target_iterations_, *max_steps_, *sequencing_;
   QDoubleSpinBox* time_limit_;
+  QCheckBox* error_estimate_;
   bool refreshing_ = false;
 };
 
