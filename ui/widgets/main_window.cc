@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QResizeEvent>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -25,6 +26,8 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 #include "core/io/resource_dir.h"
 #include "core/io/scene_reader.h"
@@ -68,6 +71,7 @@ void ShowError(QWidget* parent, const QString& title, const QString& message) {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   qRegisterMetaType<drape::Scene>();
   qRegisterMetaType<drape::SolveSummary>();
+  qRegisterMetaType<drape::ErrorEstimate>();
   qRegisterMetaType<std::shared_ptr<const drape::StepState>>();
   setWindowTitle("Drape Studio");
   auto* central = new QWidget(this);
@@ -202,6 +206,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     renderer_->FitCamera();
     viewport_->requestRender();
   });
+  // The run's error estimate stands at the status bar's right, beside the
+  // summary the bar shows when the run is done, and stays there when other
+  // messages replace that summary.
+  estimate_label_ = new QLabel(this);
+  estimate_label_->setObjectName("errorEstimate");
+  estimate_label_->setMinimumWidth(1);  // elided, never widens the window
+  estimate_label_->hide();
+  statusBar()->addPermanentWidget(estimate_label_);
+  connect(statusBar(), &QStatusBar::messageChanged, this, &MainWindow::fitEstimate);
   buildActions();
   updateControls();
   // Seven editors share the left dock area: their tabs stand on its side.
@@ -469,7 +482,8 @@ void MainWindow::updateControls() {
   redo_->setEnabled(!running_ && document_->undoStack()->canRedo());
   pause_->setEnabled(running_);
   pause_->setText(paused_ ? "Resume" : "Pause");
-  step_->setEnabled(running_ && paused_);
+  // One step of the run: the estimate's runs on coarser meshes have none.
+  step_->setEnabled(running_ && paused_ && !estimating_);
   stop_->setEnabled(running_);
 }
 
@@ -541,6 +555,8 @@ void MainWindow::onDocumentChanged() {
   if (!model_ || model->NodeCount() != model_->NodeCount()) clearPicked();
   model_ = std::move(model);
   steps_.clear();
+  estimate_.reset();
+  showEstimate({}, {});
   rebuildRenderer();
   timeline_->setRange(0, 0);
   showStep(0);
@@ -882,6 +898,9 @@ void MainWindow::run() {
   plot_->clear();
   probe_plot_->clear();
   residual_plot_->clear();
+  estimate_.reset();
+  estimating_ = false;
+  showEstimate({}, {});
   timeline_->setRange(0, 0);
   follow_ = true;
   handles_->clear();  // no edits while the run goes on
@@ -891,6 +910,16 @@ void MainWindow::run() {
   worker_->moveToThread(thread_);
   connect(thread_, &QThread::finished, worker_, &QObject::deleteLater);
   connect(worker_, &SolverWorker::stepConverged, this, &MainWindow::onStep, Qt::QueuedConnection);
+  connect(worker_,
+          &SolverWorker::estimatingError,
+          this,
+          &MainWindow::onEstimating,
+          Qt::QueuedConnection);
+  connect(worker_,
+          &SolverWorker::errorEstimated,
+          this,
+          &MainWindow::onErrorEstimated,
+          Qt::QueuedConnection);
   connect(worker_, &SolverWorker::finished, this, &MainWindow::onFinished, Qt::QueuedConnection);
   connect(worker_, &SolverWorker::failed, this, &MainWindow::onFailed, Qt::QueuedConnection);
   thread_->start();
@@ -941,7 +970,63 @@ void MainWindow::onStep(std::shared_ptr<const StepState> step) {
   }
 }
 
+// The run is complete; the worker solves the scene again on meshes 2h and
+// 4h (Stop ends that too).
+void MainWindow::onEstimating() {
+  estimating_ = true;
+  statusBar()->showMessage("estimating the error on meshes 2 and 4 times coarser…");
+  showEstimate("estimating the error…",
+               "The run is complete: the scene is solved again on meshes 2 and 4 times "
+               "coarser to estimate its error (Richardson). Stop ends the estimate.");
+  updateControls();
+}
+
+// Describe()'s line; the tooltip has each probe's numbers, or only the
+// reason when the meshes are not in the asymptotic range.
+void MainWindow::onErrorEstimated(const ErrorEstimate& estimate) {
+  estimate_ = estimate;
+  QString tooltip = QString::fromStdString(Describe(estimate));
+  if (estimate.in_asymptotic_range) {
+    tooltip += QString("\n\nobserved order %1; per probe:").arg(estimate.order, 0, 'f', 2);
+    for (const ProbeErrorEstimate& p : estimate.probes)
+      tooltip += QString("\n%1: error %2 mm, GCI ±%3 mm, extrapolated (%4, %5, %6) mm")
+                     .arg(QString::fromStdString(p.name))
+                     .arg(1e3 * p.error, 0, 'g', 3)
+                     .arg(1e3 * p.gci, 0, 'g', 3)
+                     .arg(1e3 * p.extrapolated.x(), 0, 'f', 3)
+                     .arg(1e3 * p.extrapolated.y(), 0, 'f', 3)
+                     .arg(1e3 * p.extrapolated.z(), 0, 'f', 3);
+  }
+  showEstimate(QString::fromStdString(Describe(estimate)), tooltip);
+}
+
+// The label's text elided to what the bar's message (the run's summary)
+// leaves, and at least a third of the bar; the whole line is in the tooltip.
+void MainWindow::showEstimate(const QString& text, const QString& tooltip) {
+  estimate_text_ = text;
+  estimate_label_->setToolTip(tooltip);
+  estimate_label_->setVisible(!text.isEmpty());
+  fitEstimate();
+}
+
+void MainWindow::fitEstimate() {
+  const QStatusBar* bar = statusBar();
+  const int message = bar->fontMetrics().horizontalAdvance(bar->currentMessage());
+  const int room = std::max(bar->width() / 3, bar->width() - message - 48);
+  estimate_label_->setText(
+      estimate_label_->fontMetrics().elidedText(estimate_text_, Qt::ElideRight, room));
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+  QMainWindow::resizeEvent(event);
+  fitEstimate();
+}
+
 void MainWindow::onFinished(const SolveSummary& summary) {
+  if (estimating_ && !estimate_)
+    showEstimate("error estimate: stopped before it was done",
+                 "Stop ended the estimate; the run's own result is complete.");
+  estimating_ = false;
   running_ = false;
   document_->setLocked(false);
   paused_ = false;

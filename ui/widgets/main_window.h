@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/solve/error_estimate.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
@@ -18,6 +19,7 @@
 
 class QAction;
 class QCloseEvent;
+class QResizeEvent;
 class QDockWidget;
 class QMenu;
 class QComboBox;
@@ -87,6 +89,11 @@ class MainWindow : public QMainWindow {
   int currentStep() const;
   bool isRunning() const { return running_; }
   bool isPaused() const { return paused_; }
+  // The last run's error estimate (solver.error_estimate), shown beside its
+  // summary in the status bar: Describe()'s line, the per-probe errors in
+  // its tooltip. Empty before the run's estimate came, or without one.
+  const std::optional<ErrorEstimate>& errorEstimate() const { return estimate_; }
+  QLabel* errorEstimateLabel() const { return estimate_label_; }
 
   // The colour field ("" for none, else a name of Fields()).
   bool setField(const QString& name);
@@ -121,6 +128,8 @@ class MainWindow : public QMainWindow {
 
  private slots:
   void onStep(std::shared_ptr<const drape::StepState> step);
+  void onEstimating();
+  void onErrorEstimated(const drape::ErrorEstimate& estimate);
   void onFinished(const drape::SolveSummary& summary);
   void onFailed(const QString& message);
 
@@ -129,6 +138,9 @@ class MainWindow : public QMainWindow {
   void rememberRecent(const QString& file);
   void rebuildRecentMenu();
   void closeEvent(QCloseEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void showEstimate(const QString& text, const QString& tooltip);
+  void fitEstimate();
   void onDocumentChanged();
   void rebuildRenderer();
   void updateControls();
@@ -172,6 +184,10 @@ class MainWindow : public QMainWindow {
   QMenu* recent_menu_ = nullptr;
   RenderOptions view_;
   QLabel* step_label_ = nullptr;
+  QLabel* estimate_label_ = nullptr;  // in the status bar, beside the run's summary
+  QString estimate_text_;             // the label's text before eliding
+  std::optional<ErrorEstimate> estimate_;
+  bool estimating_ = false;  // the run is done; its error estimate is under way
   QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr, *pick_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
   QThread* thread_ = nullptr;

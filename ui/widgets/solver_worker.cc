@@ -54,9 +54,26 @@ StepDecision SolverWorker::Observe(const StepState& step) {
 
 void SolverWorker::run(const Scene& scene) {
   try {
-    ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
-    const SolveSummary summary =
-        solver.Solve({[this](const StepState& s) { return Observe(s); }}, &cancel_);
+    const SolverOptions options = SolverOptions::FromScene(scene.solver);
+    ShellSolver solver(scene, options);
+    std::vector<NamedVector> last_probes;  // the final step's, as `drape run` takes them
+    const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+                                                last_probes = s.probes;
+                                                return Observe(s);
+                                              }},
+                                              &cancel_);
+    if (summary.IsComplete() && scene.solver.error_estimate) {
+      emit estimatingError();
+      ErrorEstimate estimate;
+      try {
+        estimate = EstimateError(scene, options, last_probes, &cancel_);
+      } catch (const std::exception& e) {  // a coarser mesh the scene cannot be built on
+        estimate.meshes[0] = MeshName(scene);
+        estimate.reason = std::string("the coarser meshes could not be solved: ") + e.what();
+      }
+      // The run's own result stands: only the estimate is lost.
+      if (!cancel_.IsCancelled()) emit errorEstimated(estimate);
+    }
     emit finished(summary);
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(e.what()));

@@ -3,7 +3,10 @@
 // GUI thread as a queued signal (none lost: the timeline keeps them all).
 // The queue is bounded: when the GUI thread has kQueueLength steps not yet
 // taken (consumed()), the solver waits, so a fast solver cannot bury the
-// GUI in events.
+// GUI in events. After a complete run of a scene with solver.error_estimate,
+// the worker estimates the run's error with core's EstimateError (the scene
+// on meshes 2 and 4 times coarser), under the run's own token: Stop ends
+// the estimate too, and Pause holds it.
 #pragma once
 
 #include <QObject>
@@ -14,6 +17,7 @@
 #include <mutex>
 
 #include "core/model/scene.h"
+#include "core/solve/error_estimate.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
 #include "ui/widgets/meta_types.h"
@@ -35,11 +39,15 @@ class SolverWorker : public QObject {
   static constexpr int kQueueLength = 32;
 
  public slots:
-  // Runs the whole scene; emits stepConverged per step, then finished.
+  // Runs the whole scene; emits stepConverged per step, then (complete,
+  // with solver.error_estimate) estimatingError and errorEstimated, then
+  // finished. A stopped estimate emits no errorEstimated.
   void run(const drape::Scene& scene);
 
  signals:
   void stepConverged(std::shared_ptr<const drape::StepState> step);
+  void estimatingError();  // the run is complete; its estimate has begun
+  void errorEstimated(const drape::ErrorEstimate& estimate);
   void finished(const drape::SolveSummary& summary);
   void failed(const QString& message);
 
