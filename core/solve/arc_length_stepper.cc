@@ -114,14 +114,22 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
 
   // Predictor along the tangent: Δu = Δλ Δu_I with ‖Δu‖² + ψ_e²Δλ² = Δs².
   Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
-  system_.Factorize();
+  const FactorizationInfo tangent = system_.Factorize();
   Eigen::VectorXd u_i = system_.Solve(f0);
   Eigen::VectorXd t_i = Translations(u_i);
   const double tangent_norm = std::sqrt(t_i.squaredNorm() + psi2);
   double ds = arc_length > 0 ? arc_length : first_increment * tangent_norm;
   double dl = ds / tangent_norm;
-  // Forward: the side on which the tangent agrees with the last step.
+  // Forward: the side on which the tangent agrees with the last step. On a
+  // positive definite tangent the path is a function of λ (implicit
+  // function theorem) and, traversed from λ = 0, goes to larger λ (the sign
+  // of Δλ turns with the sign of det K, at limit points): there a turn back
+  // is the wrong side taken — after a step onto a stable branch that came
+  // back a little (the diagonal fold as its corner lands), or where the
+  // tangent swings by more than 90° between steps — and it would unfold the
+  // part along a path it never takes.
   if (previous && previous->translation.dot(t_i) + psi2 * previous->lambda < 0) dl = -dl;
+  if (tangent.negative_pivots == 0) dl = std::abs(dl);
   if (dl > 0 && lambda + dl >= target - 1e-12) {
     ContinuationStep landing = StepTo(state, lambda, target, cancel);
     landing.arc_length = ds;

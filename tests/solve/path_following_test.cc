@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <vector>
 
 #include "core/io/result_reader.h"
@@ -13,6 +14,7 @@
 #include "core/io/scene_reader.h"
 #include "core/mechanics/director.h"
 #include "core/model/scene_error.h"
+#include "core/model/solver_preset.h"
 #include "core/solve/shell_solver.h"
 #include "support/strip_scene.h"
 #include "support/test_paths.h"
@@ -141,6 +143,40 @@ TEST(PathFollowing, GripperTurnedTwoFullTurnsReturnsTheStripToItsStart) {
               run.summary.stages[1].steps);
   EXPECT_LT(error, 1e-8 * spec.length);
   for (int i = 0; i < a.NodeCount(); ++i) EXPECT_LT((b.Director(i) - a.Director(i)).norm(), 1e-8);
+}
+
+// On a positive definite tangent the equilibrium path is a function of λ
+// (implicit function theorem): between two steps that both end stable no
+// limit point lies, so λ cannot fall. The 10 × 10 diagonal fold at the draft
+// preset once turned back at λ = 0.899 with no negative pivot — the
+// predictor went on in the direction of the step onto a stable branch,
+// which had come back a little — unfolded the sheet and failed past
+// λ = −1; the 40 × 40 fold never ended for the same reason.
+TEST(PathFollowing, OnAStablePathTheLoadFactorNeverFalls) {
+  Scene scene = ReadScene(test::ScenesDir() / "diagonal-fold.json");
+  scene.solver = WithPreset(scene.solver, SolverPreset::kDraft);
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  std::vector<StepState> steps;
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    steps.push_back(s);
+    return StepDecision::kContinue;
+  }});
+  ASSERT_TRUE(summary.IsComplete()) << summary.message;
+  // The step onto a branch at a bifurcation may start behind it: that
+  // switch is not a step along the path.
+  std::set<int> switches;
+  for (const StabilityEvent& e : summary.stability_events) switches.insert(e.step);
+  ASSERT_FALSE(switches.empty());  // the fold lands across a bifurcation
+  int stable_pairs = 0;
+  for (size_t i = 1; i < steps.size(); ++i) {
+    const StepState &a = steps[i - 1], &b = steps[i];
+    if (a.stage != b.stage || a.negative_pivots != 0 || b.negative_pivots != 0 ||
+        switches.count(b.step))
+      continue;
+    ++stable_pairs;
+    EXPECT_GE(b.lambda, a.lambda) << "stage " << b.stage << ", step " << b.step;
+  }
+  EXPECT_GT(stable_pairs, 30);
 }
 
 TEST(PathFollowing, ANodeAskedToBeInTwoPlacesIsRejected) {
