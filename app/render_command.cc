@@ -35,6 +35,7 @@ namespace fs = std::filesystem;
 struct ViewArgs {
   std::string size = "1280x720";
   std::string field;
+  std::string colour_map = "viridis";
   std::string camera = "iso";
   std::vector<double> position, focal_point, view_up;
   bool edges = false, thickness = false, no_floor = false, no_paths = false, no_overlay = false;
@@ -44,6 +45,11 @@ struct ViewArgs {
     std::string fields;
     for (const auto& f : Fields()) fields += std::string(fields.empty() ? "" : ", ") + f.name;
     cmd->add_option("--field", field, "Colour the fabric by a field: " + fields);
+    cmd->add_option("--colour-map",
+                    colour_map,
+                    "Colours of --field: viridis (perceptually uniform) or rainbow")
+        ->check(CLI::IsMember({"viridis", "rainbow"}))
+        ->capture_default_str();
     cmd->add_option("--camera", camera, "View: iso, front, top or side")->capture_default_str();
     cmd->add_option("--camera-position", position, "Explicit camera position x,y,z [m]")
         ->expected(3)
@@ -75,6 +81,7 @@ struct ViewArgs {
       }
       o.field = f->kind;
     }
+    o.colour_map = *ColourMapNamed(colour_map);
     if (camera != "iso" && camera != "front" && camera != "top" && camera != "side")
       throw std::invalid_argument("--camera: unknown view '" + camera +
                                   "'; expected iso, front, top or side");

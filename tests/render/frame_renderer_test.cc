@@ -151,49 +151,59 @@ TEST_F(FrameRendererTest, PngHasTheRequestedSize) {
   fs::remove(file);
 }
 
+// The strip bent with curvature rising linearly from 0 at the root to
+// 30 1/m at the tip (θ = 15 s²/L), so both ends of the map must show: for
+// viridis (the default) its dark violet (68, 1, 84; hue 289°) and its
+// yellow (253, 231, 37; hue 54°), for the rainbow blue and red.
 TEST_F(FrameRendererTest, CurvatureFieldSpansTheColourMap) {
-  // The strip bent with curvature rising linearly from 0 at the root to
-  // 30 1/m at the tip (θ = 15 s²/L), so both ends of the map must show.
-  test::StripSpec spec;
-  Scene scene = test::CantileverStrip(spec);
-  scene.probes.clear();
-  const ShellModel model = BuildShellModel(scene);
-  ShellState state = model.reference;
-  // Integrate the centre line x(s), z(s) for θ(s) = 15 s²/L finely.
-  for (int i = 0; i < model.NodeCount(); ++i) {
-    const double s_end = model.reference.positions(i, 0);
-    double x = 0, z = 0;
-    const int n = 400;
-    for (int j = 0; j < n; ++j) {
-      const double s = (j + 0.5) * s_end / n;
-      const double th = 15.0 * s * s / spec.length;
-      x += std::cos(th) * s_end / n;
-      z += std::sin(th) * s_end / n;
+  for (ColourMap map : {ColourMap::kViridis, ColourMap::kRainbow}) {
+    SCOPED_TRACE(ToString(map));
+    test::StripSpec spec;
+    Scene scene = test::CantileverStrip(spec);
+    scene.probes.clear();
+    const ShellModel model = BuildShellModel(scene);
+    ShellState state = model.reference;
+    // Integrate the centre line x(s), z(s) for θ(s) = 15 s²/L finely.
+    for (int i = 0; i < model.NodeCount(); ++i) {
+      const double s_end = model.reference.positions(i, 0);
+      double x = 0, z = 0;
+      const int n = 400;
+      for (int j = 0; j < n; ++j) {
+        const double s = (j + 0.5) * s_end / n;
+        const double th = 15.0 * s * s / spec.length;
+        x += std::cos(th) * s_end / n;
+        z += std::sin(th) * s_end / n;
+      }
+      state.positions(i, 0) = x;
+      state.positions(i, 2) = z;
+      const double th = 15.0 * s_end * s_end / spec.length;
+      state.rotations[i] = RotationFromDirector({-std::sin(th), 0, std::cos(th)});
     }
-    state.positions(i, 0) = x;
-    state.positions(i, 2) = z;
-    const double th = 15.0 * s_end * s_end / spec.length;
-    state.rotations[i] = RotationFromDirector({-std::sin(th), 0, std::cos(th)});
+    RenderOptions options = Bare(800, 500);
+    options.field = FieldKind::kCurvature;
+    options.colour_map = map;
+    options.camera.view = "top";  // the strip's face, bent up towards the camera
+    FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state}));
+    Frame frame;
+    frame.state = &state;
+    renderer.Show(frame);
+    Image image{800, 500, renderer.CaptureRgb()};
+    const bool viridis = map == ColourMap::kViridis;
+    int low = 0, high = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width * 3 / 4; ++x) {  // left of the colour bar
+        const auto [h, s] = HueSaturation(image.At(x, y));
+        if (s < 0.6) continue;
+        low += viridis ? h > 275 && h < 305 : h > 225 && h < 255;
+        high += viridis ? h > 45 && h < 62 : h < 12 || h > 348;
+      }
+    std::printf("%s: fabric pixels coloured as the map's low end: %d, high end: %d\n",
+                ToString(map),
+                low,
+                high);
+    EXPECT_GT(low, 50);
+    EXPECT_GT(high, 50);
   }
-  RenderOptions options = Bare(800, 500);
-  options.field = FieldKind::kCurvature;
-  options.camera.view = "top";  // the strip's face, bent up towards the camera
-  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state}));
-  Frame frame;
-  frame.state = &state;
-  renderer.Show(frame);
-  Image image{800, 500, renderer.CaptureRgb()};
-  int blue = 0, red = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width * 3 / 4; ++x) {  // left of the colour bar
-      const auto [h, s] = HueSaturation(image.At(x, y));
-      if (s < 0.6) continue;
-      blue += h > 225 && h < 255;
-      red += h < 12 || h > 348;
-    }
-  std::printf("fabric pixels coloured as the map's low end: %d, high end: %d\n", blue, red);
-  EXPECT_GT(blue, 50);
-  EXPECT_GT(red, 50);
 }
 
 TEST_F(FrameRendererTest, ObstaclesAndGrippersAreWhereTheSceneSays) {

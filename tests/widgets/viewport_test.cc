@@ -103,6 +103,12 @@ TEST_F(Widgets, WorkbenchShowsEveryStepOfARunInOrder) {
   EXPECT_EQ(window.plot()->stabilityMarks(), static_cast<int>(summary.stability_events.size()));
   QTest::qWait(100);
   const QImage shown = window.viewport()->grabFramebuffer();
+  // A screenshot looks like the screen: every pixel opaque (VTK clears
+  // alpha to 0 unless told; 94 % of a screenshot was once transparent).
+  int transparent = 0;
+  for (int y = 0; y < shown.height(); ++y)
+    for (int x = 0; x < shown.width(); ++x) transparent += qAlpha(shown.pixel(x, y)) != 255;
+  EXPECT_EQ(transparent, 0) << "of " << shown.width() * shown.height() << " pixels";
   // The viewport draws what the offscreen renderer draws of the last step
   // (the same builder, camera and size): the same fabric, to a few pixels
   // of rasterisation.

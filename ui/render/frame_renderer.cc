@@ -29,6 +29,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -45,6 +46,36 @@ using Ptr = vtkSmartPointer<T>;
 constexpr double kFront[3] = {0.93, 0.62, 0.33};
 constexpr double kBack[3] = {0.47, 0.36, 0.62};
 constexpr double kBackground[3] = {0.96, 0.97, 0.98};
+
+// Viridis at nine evenly spaced points (matplotlib's data, CC0), in 0–255.
+constexpr unsigned char kViridis[9][3] = {{68, 1, 84},
+                                          {71, 44, 122},
+                                          {59, 81, 139},
+                                          {44, 113, 142},
+                                          {33, 144, 141},
+                                          {39, 173, 129},
+                                          {92, 200, 99},
+                                          {170, 220, 50},
+                                          {253, 231, 37}};
+
+void FillColourMap(ColourMap map, vtkLookupTable* table) {
+  constexpr int kEntries = 256;
+  table->SetNumberOfTableValues(kEntries);
+  if (map == ColourMap::kRainbow) {
+    table->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
+    table->ForceBuild();
+    return;
+  }
+  for (int i = 0; i < kEntries; ++i) {
+    const double t = 8.0 * i / (kEntries - 1);
+    const int k = std::min(7, static_cast<int>(t));
+    const double f = t - k;
+    double rgb[3];
+    for (int c = 0; c < 3; ++c)
+      rgb[c] = ((1 - f) * kViridis[k][c] + f * kViridis[k + 1][c]) / 255.0;
+    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
+  }
+}
 constexpr double kObstacle[3] = {0.62, 0.66, 0.70};
 constexpr double kSupport[3] = {0.25, 0.25, 0.28};
 constexpr double kGripper[3] = {0.85, 0.15, 0.15};
@@ -108,6 +139,16 @@ Eigen::Vector3d ViewDirection(const std::string& view, Eigen::Vector3d* up) {
 
 }  // namespace
 
+const char* ToString(ColourMap map) {
+  return map == ColourMap::kRainbow ? "rainbow" : "viridis";
+}
+
+std::optional<ColourMap> ColourMapNamed(std::string_view name) {
+  for (ColourMap m : {ColourMap::kViridis, ColourMap::kRainbow})
+    if (name == ToString(m)) return m;
+  return std::nullopt;
+}
+
 struct FrameRenderer::Impl {
   const Scene& scene;
   const ShellModel& model;
@@ -147,6 +188,10 @@ struct FrameRenderer::Impl {
     }
     window->AddRenderer(renderer);
     renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+    // Opaque: VTK clears alpha to 0, and a grab of the viewport (a
+    // screenshot) would then be transparent where the screen shows the
+    // background.
+    renderer->SetBackgroundAlpha(1.0);
     renderer->SetTwoSidedLighting(true);
     const double size = bounds.diagonal().norm();
     AddFabric();
@@ -170,9 +215,7 @@ struct FrameRenderer::Impl {
   }
 
   void AddFabric() {
-    colours->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
-    colours->SetNumberOfTableValues(256);
-    colours->Build();
+    FillColourMap(options.colour_map, colours);
     const int layers = options.thickness ? 2 : 1;
     for (int l = 0; l < layers; ++l) {
       auto mapper = Ptr<vtkPolyDataMapper>::New();

@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/model/scene.h"
@@ -36,14 +37,22 @@ struct CameraSpec {
   std::optional<Eigen::Vector3d> position, focal_point, view_up;
 };
 
+// How a colour field's values become colours. Viridis (van der Walt,
+// Smith & Firing, matplotlib 2015) is perceptually uniform and reads in
+// grey; the rainbow is kept for pictures that must match older ones.
+enum class ColourMap { kViridis, kRainbow };
+const char* ToString(ColourMap map);
+std::optional<ColourMap> ColourMapNamed(std::string_view name);
+
 struct RenderOptions {
   int width = 1280, height = 720;
   std::optional<FieldKind> field;  // none: the fabric's own two colours
-  bool edges = false;              // mesh lines on the surface
-  bool thickness = false;          // both faces, h apart, instead of the midsurface
-  bool floor = true;               // a grid under the part (unless a plane obstacle is there)
-  bool paths = true;               // gripper paths as polylines with an arrow
-  bool overlay = true;             // scene name, stage, step, λ
+  ColourMap colour_map = ColourMap::kViridis;
+  bool edges = false;      // mesh lines on the surface
+  bool thickness = false;  // both faces, h apart, instead of the midsurface
+  bool floor = true;       // a grid under the part (unless a plane obstacle is there)
+  bool paths = true;       // gripper paths as polylines with an arrow
+  bool overlay = true;     // scene name, stage, step, λ
   CameraSpec camera;
 };
 
