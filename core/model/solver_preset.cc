@@ -8,15 +8,17 @@ namespace drape {
 namespace {
 
 // From the fronts of docs/speed-accuracy.md: the mesh decides the error
-// (order ≈ 2 on the strips and the rod drape), and a tolerance of 1e-5 is as
-// good as 1e-7 on a scene's own mesh; only long steps (N_p 10) at 1e-3 or
-// 1e-5 on the finer meshes ended with the element at the gripper turned
-// inside out, two elements from the reference (1e-7 never did). N_p pulls two ways: 10 is two to
-// five times faster than 4 on the strips and the rod, but 3–17 times slower on the diagonal fold,
-// whose long steps cross bifurcations that must be switched at. N_p = 6 is within 1.5× of the
-// fastest on all three (strip fold 0.62 s against 0.61, rod 0.29 against 0.19, diagonal fold 1.5 s
-// against 13.6 at N_p 10), on the same end states. Δλ₀ changed nothing (the acceleration takes it
-// over within a few steps), so no preset sets it.
+// (order ≈ 2 on the strips and the rod drape), and a tolerance of 1e-5 is
+// as good as 1e-7 on a scene's own mesh; only long steps (N_p 10) at 1e-3
+// or 1e-5 on the finer meshes ended with the element at the gripper turned
+// inside out, two elements from the reference (1e-7 never did). N_p pulls
+// two ways: 10 is fastest on the strips and the rod, 4 on the diagonal
+// fold, whose long steps cross bifurcations that must be switched at.
+// N_p = 6 is within 1.6× of the fastest on all three
+// (docs/speed-accuracy/np-*.json: strip fold 0.69 s against 0.59 at N_p 7,
+// rod 0.31 against 0.20 at 10, diagonal fold 1.64 s against 1.61 at 5 and
+// 10.0 at 10), on the same end states. Δλ₀ changed nothing (the
+// acceleration takes it over within a few steps), so no preset sets it.
 constexpr std::array<PresetDefinition, 3> kPresets{{
     {SolverPreset::kDraft, "draft", 1e-4, 6, 0.5, "half the mesh, tolerance 1e-4: a quick look"},
     {SolverPreset::kBalanced, "balanced", 1e-5, 6, 1.0, "the scene's mesh, tolerance 1e-5"},
