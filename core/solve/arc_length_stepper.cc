@@ -129,7 +129,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   // tangent swings by more than 90° between steps — and it would unfold the
   // part along a path it never takes.
   if (previous && previous->translation.dot(t_i) + psi2 * previous->lambda < 0) dl = -dl;
-  if (tangent.negative_pivots == 0) dl = std::abs(dl);
+  if (definite_goes_forward_ && tangent.negative_pivots == 0) dl = std::abs(dl);
   if (dl > 0 && lambda + dl >= target - 1e-12) {
     ContinuationStep landing = StepTo(state, lambda, target, cancel);
     landing.arc_length = ds;

@@ -63,6 +63,12 @@ class ArcLengthStepper {
                         double target,
                         const CancellationToken* cancel);
 
+  // On a positive definite tangent the predictor goes to larger λ (on by
+  // default; see Step). Off once a branch switch has landed behind its
+  // bifurcation and the way forward led back to it: that branch bends
+  // back, and forward would only meet the same bifurcation again.
+  void SetDefiniteGoesForward(bool on) { definite_goes_forward_ = on; }
+
   // A load-controlled step to λ = target (tangent predictor, then Newton).
   ContinuationStep StepTo(ShellState& state,
                           double lambda,
@@ -120,6 +126,7 @@ class ArcLengthStepper {
   const StageLoading& loading_;
   NewtonSettings newton_;
   double psi_;
+  bool definite_goes_forward_ = true;
   Eigen::VectorXd translation_mask_;  // 1 on free translation DOFs, 0 on rotations
 };
 

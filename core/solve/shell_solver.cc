@@ -700,6 +700,7 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
   PathDirection previous;
   bool has_previous = false;
   int cuts_in_a_row = 0;
+  double last_landing = NAN;  // λ where the last branch switch landed
   while (lambda < 1.0 - 1e-12) {
     if (summary.steps >= options.max_steps) {
       StopAtMaxSteps(spec, lambda);
@@ -750,6 +751,11 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
                            stage,
                            branch))
         return false;
+      // Landing where the last switch landed: forward from there led back to
+      // the same bifurcation (the branch bends back; the part would snap).
+      // Let the path go the way the switch pointed instead of round again.
+      if (std::abs(branch.lambda - last_landing) < 1e-6) stepper.SetDefiniteGoesForward(false);
+      last_landing = branch.lambda;
       lambda = branch.lambda;
       previous = branch.step.direction;
       has_previous = true;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -177,6 +178,32 @@ TEST(PathFollowing, OnAStablePathTheLoadFactorNeverFalls) {
     EXPECT_GE(b.lambda, a.lambda) << "stage " << b.stage << ", step " << b.step;
   }
   EXPECT_GT(stable_pairs, 30);
+}
+
+// A branch that bends back: on this wavy sheet hung from four pins the
+// switch at λ = 0.9337 lands on a stable state a little behind the
+// bifurcation, and forward from there leads back to it. Once sent forward
+// on every definite tangent, the run went round between the two states
+// until max_steps; now a second landing on the same state lets the path go
+// the way the switch pointed, and the run ends (here where the part would
+// snap) in tens of steps.
+TEST(PathFollowing, ABranchThatBendsBackIsNotGoneRoundForever) {
+  Scene scene = ReadScene(test::SourceDir() / "tests" / "data" / "block-pins-seed19.json");
+  scene.solver.max_steps = 400;
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  std::map<long, int> landings;  // switches per landing λ (to 1e-6)
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    if (s.stability_event && s.stability_event->branch == Branch::kStable)
+      ++landings[std::lround(s.lambda * 1e6)];
+    return StepDecision::kContinue;
+  }});
+  EXPECT_NE(summary.termination, Termination::kMaxStepsReached) << summary.message;
+  EXPECT_LT(summary.steps, 200) << summary.message;
+  for (const auto& [lambda, count] : landings) EXPECT_LE(count, 2) << "λ = " << lambda * 1e-6;
+  std::printf("%d steps, %zu landing points: %s\n",
+              summary.steps,
+              landings.size(),
+              summary.message.c_str());
 }
 
 TEST(PathFollowing, ANodeAskedToBeInTwoPlacesIsRejected) {
