@@ -49,6 +49,7 @@
 #include "ui/widgets/probe_plot.h"
 #include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
+#include "ui/widgets/reaction_plot.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
@@ -170,6 +171,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   residual_dock->setWidget(residual_plot_);
   addDockWidget(Qt::BottomDockWidgetArea, residual_dock);
   tabifyDockWidget(plot_dock, residual_dock);
+  reaction_plot_ = new ReactionPlot(this);
+  auto* reaction_dock = new QDockWidget("Reactions", this);
+  reaction_dock->setObjectName("Reactions");
+  reaction_dock->setWidget(reaction_plot_);
+  addDockWidget(Qt::BottomDockWidgetArea, reaction_dock);
+  tabifyDockWidget(plot_dock, reaction_dock);
   plot_dock->raise();
   connect(tree_, &ModelTree::chosen, this, [this](ModelTree::Part part, int index, int move) {
     showEditor(static_cast<int>(part), index, move);
@@ -857,6 +864,7 @@ bool MainWindow::exportVtu(const QString& directory, QString* error) {
 void MainWindow::showStep(int index) {
   if (!renderer_) return;
   index = std::clamp(index, 0, stepCount());
+  reaction_plot_->setCurrentStep(index);  // the timeline's index is the step's number
   if (timeline_->value() != index) {
     const QSignalBlocker block(timeline_);
     timeline_->setValue(index);
@@ -898,6 +906,8 @@ void MainWindow::run() {
   plot_->clear();
   probe_plot_->clear();
   residual_plot_->clear();
+  reaction_plot_->clear();
+  reaction_plot_->setScene(scene_);
   estimate_.reset();
   estimating_ = false;
   showEstimate({}, {});
@@ -955,6 +965,7 @@ void MainWindow::onStep(std::shared_ptr<const StepState> step) {
   plot_->add(*step);
   probe_plot_->add(*step);
   residual_plot_->add(*step);
+  reaction_plot_->add(*step);
   steps_.push_back(std::move(step));
   const QSignalBlocker block(timeline_);
   timeline_->setRange(0, stepCount());

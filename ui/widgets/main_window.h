@@ -38,6 +38,7 @@ class ObstaclesPanel;
 class PathHandles;
 class ProbePlot;
 class ProbesPanel;
+class ReactionPlot;
 class ResidualPlot;
 class PropertyPanel;
 class RunPlot;
@@ -67,6 +68,7 @@ class MainWindow : public QMainWindow {
   ModelTree* tree() const { return tree_; }
   ProbePlot* probePlot() const { return probe_plot_; }
   ResidualPlot* residualPlot() const { return residual_plot_; }
+  ReactionPlot* reactionPlot() const { return reaction_plot_; }
   PathHandles* pathHandles() const { return handles_; }
   DragHandles* obstacleHandles() const { return obstacle_handles_; }
   // Nodes picked in the viewport (pick mode), in the order picked.
@@ -170,6 +172,7 @@ class MainWindow : public QMainWindow {
   ModelTree* tree_ = nullptr;
   ProbePlot* probe_plot_ = nullptr;
   ResidualPlot* residual_plot_ = nullptr;
+  ReactionPlot* reaction_plot_ = nullptr;
   std::vector<QDockWidget*> editor_docks_;               // by ModelTree::Part
   bool stages_shown_ = false, obstacles_shown_ = false;  // their docks' tabs are up
   PathHandles* handles_ = nullptr;
