@@ -20,10 +20,12 @@
 #include "core/solve/element_fields.h"
 #ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
+#include "core/io/result_reader.h"
 #include "core/model/scene_error.h"
 #include "ui/render/animation.h"
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/render/reaction_chart.h"
 #endif
 
 namespace drape::app {
@@ -105,6 +107,7 @@ struct ViewArgs {
 
 struct RenderArgs {
   std::string input, output, step = "last";
+  std::string plot;  // "reactions": a chart instead of the 3-D view
   ViewArgs view;
 };
 
@@ -153,8 +156,69 @@ int Guarded(const char* command, Body body) {
 
 // ---- render ------------------------------------------------------------------
 
+// --plot reactions: |F| of each gripper and support against the step, the
+// stages marked, from result.json alone (no model is built).
+int RunReactionPlot(const RenderArgs& args) {
+  ReactionChartOptions options;
+  std::tie(options.width, options.height) = ParseSize(args.view.size);
+  if (!IsResultInput(args.input))
+    throw std::invalid_argument(args.input +
+                                ": a scene has no reactions; --plot reactions draws a result "
+                                "(drape run SCENE -o DIR, then drape render DIR --plot reactions)");
+  const RunRecord record = ReadRunRecord(args.input);
+  const fs::path file = record.directory / "result.json";
+  bool any = false;
+  for (const RecordedStep& step : record.steps) any |= !step.reactions.empty();
+  if (!any)
+    throw std::invalid_argument(
+        file.string() + ": " +
+        (record.steps.empty() ? "the run has no converged step (status '" + record.status + "')"
+                              : std::string("no step records a reaction")) +
+        ", so there are no reactions to plot");
+  // Grippers first (what a gripper must carry is the question), then
+  // supports, as the scene lists them; the legend names which is which.
+  std::vector<std::string> names, kinds;
+  for (const auto& g : record.scene.grippers) names.push_back(g.name), kinds.push_back("gripper");
+  for (const auto& s : record.scene.supports) names.push_back(s.name), kinds.push_back("support");
+  std::vector<ReactionSeries> series;
+  for (size_t k = 0; k < names.size(); ++k)
+    series.push_back({names[k] + " (" + kinds[k] + ")", {}, {}});
+  for (const RecordedStep& step : record.steps)
+    for (const NamedVector& r : step.reactions) {
+      const auto at = std::find(names.begin(), names.end(), r.name) - names.begin();
+      if (at == static_cast<long>(names.size())) {
+        names.push_back(r.name);
+        series.push_back({r.name, {}, {}});
+      }
+      series[at].steps.push_back(step.step);
+      // Not r.value.norm(): components of 1e200 N would square to inf.
+      series[at].forces.push_back(std::hypot(r.value.x(), r.value.y(), r.value.z()));
+    }
+  // Where each stage starts, among the steps drawn (those only states.bin
+  // has, in a run still going, carry no reactions).
+  int previous_stage = -1;
+  for (const RecordedStep& s : record.steps)
+    if (!s.reactions.empty() && (options.stages.empty() || s.stage != previous_stage)) {
+      options.stages.push_back(
+          {static_cast<double>(s.step),
+           s.stage_name.empty() ? "stage " + std::to_string(s.stage) : s.stage_name});
+      previous_stage = s.stage;
+    }
+  options.title = "Reactions: " + (record.scene.name.empty() ? record.directory.filename().string()
+                                                             : record.scene.name);
+  if (record.status != "converged" && !record.status.empty())
+    options.title += " (" + record.status + ")";
+  try {
+    WriteReactionChart(series, options, args.output);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(file.string() + ": " + e.what());
+  }
+  return 0;
+}
+
 int RunRender(const RenderArgs& args) {
   return Guarded("render", [&] {
+    if (args.plot == "reactions") return RunReactionPlot(args);
     const RenderOptions options = args.view.Options();
     const RunInput run = ReadRunInput(args.input);
     const size_t i = StepIndex(run, args.step);
@@ -265,6 +329,27 @@ void AddRenderCommands(CLI::App& app, CommandRunner& runner) {
   r->add_option("--step", render->step, "Step number, 0 for the reference state, or 'last'")
       ->capture_default_str();
   render->view.AddTo(r);
+  CLI::Option* plot =
+      r->add_option("--plot",
+                    render->plot,
+                    "Draw a chart instead of the fabric: 'reactions', |F| [N] of each gripper and "
+                    "support against the step (a result; only --size applies)")
+          ->check(CLI::IsMember({"reactions"}));
+  // The chart covers every step and has no camera: the 3-D view's options
+  // would be ignored, so they are refused.
+  for (const char* name : {"--step",
+                           "--field",
+                           "--colour-map",
+                           "--camera",
+                           "--camera-position",
+                           "--focal-point",
+                           "--view-up",
+                           "--edges",
+                           "--thickness",
+                           "--no-floor",
+                           "--no-paths",
+                           "--no-overlay"})
+    plot->excludes(r->get_option(name));
   r->callback([render, &runner] { runner = [render] { return RunRender(*render); }; });
 
   auto animate = std::make_shared<AnimateArgs>();

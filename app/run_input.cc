@@ -11,9 +11,7 @@
 namespace drape::app {
 namespace fs = std::filesystem;
 
-namespace {
-
-bool IsResult(const fs::path& input) {
+bool IsResultInput(const fs::path& input) {
   std::error_code ec;
   if (fs::is_directory(input, ec)) return true;
   std::ifstream in(input);
@@ -26,11 +24,9 @@ bool IsResult(const fs::path& input) {
   }
 }
 
-}  // namespace
-
 RunInput ReadRunInput(const fs::path& input) {
   RunInput run;
-  if (!IsResult(input)) {
+  if (!IsResultInput(input)) {
     run.scene = ReadScene(input);
     run.model = BuildShellModel(run.scene);
     run.states.push_back(run.model.reference);

@@ -24,6 +24,11 @@ struct RunInput {
   bool is_result = false;
 };
 
+// True when `input` is a result folder or a result.json (a "drape_result"
+// document), false for anything else (a scene); throws std::runtime_error
+// when it cannot be opened.
+bool IsResultInput(const std::filesystem::path& input);
+
 // Throws std::runtime_error (or SceneError) with one message naming the
 // file and the problem.
 RunInput ReadRunInput(const std::filesystem::path& input);

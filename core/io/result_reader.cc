@@ -2,7 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <stdexcept>
@@ -40,6 +42,38 @@ ObstaclePlacement PlacementOf(const json& j) {
     p.translation(r) = j.at("translation").at(r).get<double>();
   }
   return p;
+}
+
+// steps[i].reactions: {name: [Fx, Fy, Fz]}, in the order the solver writes
+// them (supports, then grippers); result.json's own order is lost to
+// nlohmann::json's sorted objects.
+std::vector<NamedVector> ReactionsOf(const json& j,
+                                     const Scene& scene,
+                                     const std::string& where,
+                                     const fs::path& file) {
+  if (!j.is_object()) Fail(file, where + ": " + j.dump() + " is not an object of forces");
+  std::vector<std::string> order;
+  for (const auto& s : scene.supports) order.push_back(s.name);
+  for (const auto& g : scene.grippers) order.push_back(g.name);
+  auto rank = [&](const std::string& name) {
+    return std::find(order.begin(), order.end(), name) - order.begin();
+  };
+  std::vector<NamedVector> reactions;
+  for (const auto& [name, force] : j.items()) {
+    NamedVector r{name, Eigen::Vector3d::Zero()};
+    bool ok = force.is_array() && force.size() == 3;
+    for (int c = 0; ok && c < 3; ++c) {
+      ok = force[c].is_number() && std::isfinite(force[c].get<double>());
+      if (ok) r.value(c) = force[c].get<double>();
+    }
+    if (!ok)
+      Fail(file, where + "." + name + ": " + force.dump() + " is not a force [Fx, Fy, Fz] in N");
+    reactions.push_back(std::move(r));
+  }
+  std::stable_sort(reactions.begin(), reactions.end(), [&](const auto& a, const auto& b) {
+    return rank(a.name) < rank(b.name);
+  });
+  return reactions;
 }
 
 }  // namespace
@@ -82,6 +116,8 @@ RunRecord ReadRunRecord(const fs::path& path) {
         for (size_t o = 0; o < obstacle_names.size(); ++o)
           if (s["obstacles"].contains(obstacle_names[o]))
             step.obstacles[o] = PlacementOf(s["obstacles"][obstacle_names[o]]);
+      if (s.contains("reactions"))
+        step.reactions = ReactionsOf(s["reactions"], record.scene, where + ".reactions", file);
       record.steps.push_back(std::move(step));
     }
     if (r.contains("final") && r["final"].contains("contact_pressure"))

@@ -9,6 +9,7 @@
 #include "core/io/state_file.h"
 #include "core/model/scene.h"
 #include "core/solve/shell_state.h"
+#include "core/solve/step_state.h"
 
 namespace drape {
 
@@ -18,6 +19,10 @@ struct RecordedStep {
   int step = 0;
   double lambda = 0;
   std::vector<ObstaclePlacement> obstacles;  // one per scene obstacle
+  // `reactions`: the force each support and gripper exerts on the fabric
+  // [N], supports then grippers in the scene's order (any other name after
+  // them). Empty for a step only states.bin has.
+  std::vector<NamedVector> reactions;
 };
 
 struct RunRecord {
@@ -33,7 +38,8 @@ struct RunRecord {
 // `path` is a result folder or its result.json. Throws std::runtime_error
 // naming the file and the problem (missing, not a result, a step's stage or
 // number that is not an integer, a state file that does not match the
-// result's mesh or is damaged, see ReadStateFile).
+// result's mesh or is damaged, see ReadStateFile; a reaction that is not
+// three finite numbers).
 RunRecord ReadRunRecord(const std::filesystem::path& path);
 
 // The shell state of step index `i` (0-based in `states`): positions and

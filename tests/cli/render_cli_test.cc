@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "support/drape_command.h"
@@ -100,6 +101,68 @@ TEST_F(RenderCli, BadArgumentsAreOneMessageAndExitOne) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("/no/such/result"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// --plot reactions: the chart of each hold's |F| against the step instead of
+// the fabric (its pixels: tests/render/reaction_chart_test.cc).
+TEST_F(RenderCli, PlotReactionsDrawsAChart) {
+  auto r = RunDrape("render " + Fold() + " --plot reactions -o " + Out("reactions.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(PngSize(dir_ / "reactions.png"), std::make_pair(1280u, 720u));
+  r = RunDrape("render " + Fold() + "/result.json --plot reactions -o " + Out("small.png") +
+               " --size 640x400");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(PngSize(dir_ / "small.png"), std::make_pair(640u, 400u));
+}
+
+TEST_F(RenderCli, PlotReactionsRefusesWhatItCannotDraw) {
+  auto expect_refused = [](const std::string& arguments, const std::string& message) {
+    const auto r = RunDrape(arguments);
+    EXPECT_EQ(r.exit_code, 1) << arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << arguments << "\n" << r.output;
+  };
+  const std::string plot = " --plot reactions -o " + Out("refused.png");
+  expect_refused("render '" + (test::ScenesDir() / "strip-fold.json").string() + "'" + plot,
+                 "strip-fold.json: a scene has no reactions; --plot reactions draws a result");
+  expect_refused("render " + Fold() + " --plot forces -o " + Out("refused.png"),
+                 "--plot: forces not in {reactions}");
+  expect_refused("render " + Fold() + plot + " --step 3", "--step excludes --plot");
+  expect_refused("render " + Fold() + plot + " --field curvature", "--field excludes --plot");
+  expect_refused("render " + Fold() + plot + " --size 10x10", "--size");
+
+  // A copy of the fold with one value changed at a time.
+  const fs::path copy = dir_ / "fold-copy";
+  fs::create_directories(copy);
+  std::ifstream in(dir_ / "fold" / "result.json");
+  const nlohmann::json original = nlohmann::json::parse(in);
+  auto with = [&](const nlohmann::json& doc, const std::string& states) {
+    std::ofstream(copy / "result.json") << doc.dump();
+    fs::copy_file(
+        dir_ / "fold" / "states.bin", copy / "states.bin", fs::copy_options::overwrite_existing);
+    if (!states.empty()) fs::resize_file(copy / "states.bin", std::stoul(states));
+    return "render '" + copy.string() + "'" + plot;
+  };
+  // A NaN (written as null) is refused by the reader, naming the key.
+  nlohmann::json doc = original;
+  doc["steps"][5]["reactions"]["end"][0] = nullptr;
+  expect_refused(with(doc, ""), "result.json: steps[5].reactions.end: [null,");
+  // Components a double holds whose magnitude it does not.
+  doc = original;
+  doc["steps"][5]["reactions"]["end"] = {1.7e308, 1.7e308, 0.0};
+  expect_refused(with(doc, ""),
+                 "result.json: reaction of 'end (gripper)' at step 6: |F| = inf N is not a "
+                 "finite magnitude; nothing drawn");
+  // No step at all: result.json lists none and states.bin ends after its
+  // mesh (magic, header, 3N positions, 4E quads).
+  doc = original;
+  doc["steps"] = nlohmann::json::array();
+  doc["status"] = "failed";
+  const int nodes = doc["mesh"]["nodes"], elements = doc["mesh"]["elements"];
+  const size_t mesh_bytes = 8 + 16 + 24 * nodes + 16 * elements + (elements % 2 ? 4 : 0);
+  expect_refused(with(doc, std::to_string(mesh_bytes)),
+                 "result.json: the run has no converged step (status 'failed'), so there are no "
+                 "reactions to plot");
+  EXPECT_FALSE(fs::exists(dir_ / "refused.png"));
 }
 
 TEST_F(RenderCli, AnimateMp4HasOneFramePerStep) {

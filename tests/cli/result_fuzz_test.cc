@@ -193,6 +193,7 @@ void ExpectSoundRecord(const RunRecord& r, const std::string& input) {
     ASSERT_TRUE(std::isfinite(r.steps[i].lambda)) << "step " << i << " of\n" << input;
     for (const ObstaclePlacement& p : r.steps[i].obstacles)
       ASSERT_TRUE(AllFinite(p.rotation) && AllFinite(p.translation)) << input;
+    for (const NamedVector& f : r.steps[i].reactions) ASSERT_TRUE(AllFinite(f.value)) << input;
     const ShellState state = StateOf(r, i);
     ASSERT_TRUE(AllFinite(state.positions)) << input;
     for (const auto& rotation : state.rotations) ASSERT_TRUE(AllFinite(rotation)) << input;
@@ -260,6 +261,66 @@ TEST_F(ReaderFuzzResult, RegressionStepNumbersMustBeIntegers) {
   doc["steps"][0]["step"] = 2.5;
   WriteBytes(folder / "result.json", doc.dump());
   EXPECT_THROW(ReadRunRecord(folder), std::runtime_error);
+}
+
+// steps[].reactions: each step's forces, by name, in the scene's order
+// (supports, then grippers) and any other name after them, not
+// result.json's sorted one; anything but three finite numbers is refused,
+// naming the key (null is how a NaN is written).
+TEST_F(ReaderFuzzResult, ReactionsAreReadPerStep) {
+  json doc = json::parse((*seeds_)[0].result);
+  const fs::path folder = *dir_ / "reactions";
+  fs::create_directories(folder);
+  WriteBytes(folder / "states.bin", (*seeds_)[0].states);
+  auto read = [&] {
+    WriteBytes(folder / "result.json", doc.dump());
+    return ReadRunRecord(folder);
+  };
+  const RunRecord record = read();
+  ASSERT_EQ(record.steps.size(), doc["steps"].size());
+  ASSERT_GT(record.steps.size(), 1u);
+  for (size_t i = 0; i < record.steps.size(); ++i) {
+    ASSERT_EQ(record.steps[i].reactions.size(), 1u) << i;
+    EXPECT_EQ(record.steps[i].reactions[0].name, "corners");
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(record.steps[i].reactions[0].value(c),
+                doc["steps"][i]["reactions"]["corners"][c].get<double>());
+  }
+  EXPECT_GT(record.steps.back().reactions[0].value.z(), 0);  // the corners carry the sheet
+
+  doc["steps"][0]["reactions"]["aaa"] = {1.0, 2.0, 3.0};  // before "corners" alphabetically
+  const RunRecord extra = read();
+  ASSERT_EQ(extra.steps[0].reactions.size(), 2u);
+  EXPECT_EQ(extra.steps[0].reactions[0].name, "corners");
+  EXPECT_EQ(extra.steps[0].reactions[1].name, "aaa");
+  EXPECT_EQ(extra.steps[0].reactions[1].value, Eigen::Vector3d(1, 2, 3));
+  doc["steps"][0]["reactions"].erase("aaa");
+
+  doc["steps"][1].erase("reactions");
+  EXPECT_TRUE(read().steps[1].reactions.empty());
+
+  const std::string prefix = (folder / "result.json").string() + ": steps[1].reactions";
+  for (const json& bad : {json{0.0, nullptr, 1.0}, json{0.0, 1.0}, json("x"), json{0, 1, "2"}}) {
+    doc["steps"][1]["reactions"]["corners"] = bad;
+    try {
+      read();
+      ADD_FAILURE() << "read " << bad.dump();
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(prefix + ".corners: " + bad.dump() +
+                                           " is not a force [Fx, Fy, Fz] in N"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  doc["steps"][1]["reactions"] = 3;
+  try {
+    read();
+    ADD_FAILURE() << "read reactions: 3";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(prefix + ": 3 is not an object of forces"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
