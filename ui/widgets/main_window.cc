@@ -4,7 +4,6 @@
 #include <QAction>
 #include <QCloseEvent>
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -14,7 +13,6 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QProgressDialog>
 #include <QResizeEvent>
 #include <QSettings>
 #include <QSlider>
@@ -35,9 +33,7 @@
 #include "core/model/obstacle_anchor.h"
 #include "core/model/outline_geometry.h"
 #include "core/solve/path_handles.h"
-#include "ui/render/animation.h"
 #include "ui/render/frame_renderer.h"
-#include "ui/render/surface_export.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"
 #include "ui/widgets/loads_panel.h"
@@ -752,113 +748,38 @@ void MainWindow::play() {
   player_->start();
 }
 
+ExportedRun MainWindow::exportedRun() const {
+  return {&scene_, model_.get(), &steps_, currentStep(), running_};
+}
+
+// The viewport's look at the viewport's size: a picture shows what the
+// screen does.
+RenderOptions MainWindow::viewportLook() const {
+  RenderOptions look = view_;
+  look.width = viewport_->width();
+  look.height = viewport_->height();
+  return look;
+}
+
+bool MainWindow::report(const ExportOutcome& outcome, QString* error) {
+  if (outcome.written || outcome.cancelled)
+    statusBar()->showMessage(outcome.message);
+  else if (error)
+    *error = outcome.message;
+  return outcome.written;
+}
+
 bool MainWindow::exportImage(const QString& file, QString* error) {
   if (!model_) return false;
-  try {
-    Eigen::AlignedBox3d bounds = RunBounds(scene_, {&model_->reference});
-    for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
-    RenderOptions options = view_;
-    options.width = viewport_->width();
-    options.height = viewport_->height();
-    FrameRenderer offscreen(scene_, *model_, options, bounds);
-    ShellState reference = model_->reference;
-    reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
-    Frame frame;
-    frame.state = &reference;
-    const int i = currentStep();
-    if (i > 0) {
-      const StepState& s = *steps_[i - 1];
-      frame.state = &s.state;
-      frame.step = s.step;
-      frame.stage_name = s.stage_name;
-      frame.lambda = s.lambda;
-    }
-    offscreen.Show(frame);
-    offscreen.WritePng(file.toStdString());
-    statusBar()->showMessage("wrote " + file);
-    return true;
-  } catch (const std::exception& e) {
-    if (error) *error = QString::fromStdString(e.what());
-    return false;
-  }
+  return report(ExportController(this).Image(exportedRun(), viewportLook(), file), error);
 }
 
 bool MainWindow::exportAnimation(const QString& file, double fps, QString* error) {
-  if (!model_ || steps_.empty() || running_) {
-    if (error) *error = "nothing to animate: run the scene first";
-    return false;
-  }
-  ShellState reference = model_->reference;
-  reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
-  AnimationInput input{&scene_, model_.get(), {&reference}, {""}, {0.0}};
-  for (const auto& s : steps_) {
-    input.states.push_back(&s->state);
-    input.stage_names.push_back(s->stage_name);
-    input.lambdas.push_back(s->lambda);
-  }
-  AnimationOptions options;
-  options.view = view_;
-  options.view.width = viewport_->width();
-  options.view.height = viewport_->height();
-  options.fps = fps;
-  QProgressDialog dialog(
-      "Writing " + file, "Cancel", 0, static_cast<int>(input.states.size()), this);
-  dialog.setWindowModality(Qt::WindowModal);
-  dialog.setMinimumDuration(500);
-  std::atomic<bool> cancel{false};
-  try {
-    const int frames = WriteAnimation(
-        input,
-        options,
-        file.toStdString(),
-        [&](int done, int all) {
-          dialog.setMaximum(all);
-          dialog.setValue(done);
-          QCoreApplication::processEvents();
-          if (dialog.wasCanceled()) cancel = true;
-        },
-        &cancel);
-    if (frames < 0) {
-      statusBar()->showMessage("export cancelled; no file written");
-      return false;
-    }
-    statusBar()->showMessage(QString("wrote %1 frames to %2").arg(frames).arg(file));
-    return true;
-  } catch (const std::exception& e) {
-    if (error) *error = QString::fromStdString(e.what());
-    return false;
-  }
+  return report(ExportController(this).Animation(exportedRun(), viewportLook(), file, fps), error);
 }
 
 bool MainWindow::exportVtu(const QString& directory, QString* error) {
-  if (!model_ || steps_.empty() || running_) {
-    if (error) *error = "nothing to export: run the scene first";
-    return false;
-  }
-  ShellState reference = model_->reference;
-  std::vector<ExportedStep> steps{{&reference, 0, -1, 0.0}};
-  for (const auto& s : steps_) steps.push_back({&s->state, s->step, s->stage, s->lambda});
-  QProgressDialog dialog(
-      "Writing VTU to " + directory, "Cancel", 0, static_cast<int>(steps.size()), this);
-  dialog.setWindowModality(Qt::WindowModal);
-  dialog.setMinimumDuration(500);
-  try {
-    const auto files = ExportSurfaces(
-        *model_, steps, SurfaceFormat::kVtu, directory.toStdString(), false, [&](int done, int) {
-          dialog.setValue(done);
-          QCoreApplication::processEvents();
-          return !dialog.wasCanceled();
-        });
-    statusBar()->showMessage(
-        QString("wrote %1 files to %2%3")
-            .arg(files.size())
-            .arg(directory)
-            .arg(dialog.wasCanceled() ? " (cancelled: the steps before are kept)" : ""));
-    return !dialog.wasCanceled();
-  } catch (const std::exception& e) {
-    if (error) *error = QString::fromStdString(e.what());
-    return false;
-  }
+  return report(ExportController(this).Vtu(exportedRun(), directory), error);
 }
 
 void MainWindow::showStep(int index) {

@@ -15,6 +15,7 @@
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/export_controller.h"
 #include "ui/widgets/meta_types.h"
 
 class QAction;
@@ -148,6 +149,10 @@ class MainWindow : public QMainWindow {
   void updateControls();
   void updateHandles();
   void WarnOfNodeNumbers(const Scene& scene);
+  ExportedRun exportedRun() const;
+  RenderOptions viewportLook() const;
+  // A written (or cancelled) export in the status bar; otherwise its reason in `error`.
+  bool report(const ExportOutcome& outcome, QString* error);
   void updateMarkers();
   void PublishPicked();
   void onPathDragged(const Path& path);
