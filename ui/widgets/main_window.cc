@@ -16,7 +16,6 @@
 #include <QResizeEvent>
 #include <QSettings>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QThread>
@@ -48,6 +47,7 @@
 #include "ui/widgets/reaction_plot.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_keeper.h"
 #include "ui/widgets/solver_worker.h"
 #include "ui/widgets/stages_panel.h"
 #include "ui/widgets/vtk_viewport.h"
@@ -273,53 +273,32 @@ void MainWindow::showEditor(int part, int index, int move) {
 }
 
 QString MainWindow::autosavePath() {
-  const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-  QDir().mkpath(dir);
-  return dir + "/autosave.json";
+  return SceneKeeper::AutosavePath();
 }
 
 bool MainWindow::autosave() {
-  if (!model_ || !document_->isModified()) return false;
-  try {
-    WriteScene(document_->scene(), autosavePath().toStdString());
-    QSettings().setValue("autosave/source", document_->file());
-    return true;
-  } catch (const std::exception& e) {
-    statusBar()->showMessage(QString("autosave failed: ") + e.what());
-    return false;
-  }
+  if (!model_) return false;
+  const KeeperOutcome saved = SceneKeeper::Autosave(*document_);
+  if (!saved.done && document_->isModified()) statusBar()->showMessage(saved.message);
+  return saved.done;
 }
 
 bool MainWindow::recoverAutosave() {
-  const QString file = autosavePath();
-  if (!QFileInfo::exists(file) || running_) return false;
-  const QString source = QSettings().value("autosave/source").toString();
-  try {
-    // Relative references resolve next to where the scene came from.
-    Scene recovered = ReadScene(file.toStdString());
-    if (!source.isEmpty() && QFileInfo::exists(source)) {
-      document_->open(source);
-    }
-    document_->apply("recovered edits", recovered);
-    statusBar()->showMessage("recovered the autosaved scene; save it to keep it");
-    return true;
-  } catch (const std::exception& e) {
-    ShowError(this, "Cannot recover the autosaved scene", QString::fromStdString(e.what()));
-    return false;
-  }
+  if (running_ || !QFileInfo::exists(autosavePath())) return false;
+  const KeeperOutcome recovered = SceneKeeper::Recover(*document_);
+  if (recovered.done)
+    statusBar()->showMessage(recovered.message);
+  else
+    ShowError(this, "Cannot recover the autosaved scene", recovered.message);
+  return recovered.done;
 }
 
 QStringList MainWindow::recentFiles() const {
-  return QSettings().value("recent").toStringList();
+  return SceneKeeper::RecentFiles();
 }
 
 void MainWindow::rememberRecent(const QString& file) {
-  QStringList recent = recentFiles();
-  const QString absolute = QFileInfo(file).absoluteFilePath();
-  recent.removeAll(absolute);
-  recent.prepend(absolute);
-  while (recent.size() > 8) recent.removeLast();
-  QSettings().setValue("recent", recent);
+  SceneKeeper::Remember(file);
   rebuildRecentMenu();
 }
 
@@ -346,7 +325,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   stop();
   QSettings().setValue("window/geometry", saveGeometry());
   QSettings().setValue("window/docks", saveState());
-  QFile::remove(autosavePath());  // a clean close: nothing to recover
+  SceneKeeper::ForgetAutosave();  // a clean close: nothing to recover
   event->accept();
 }
 
