@@ -13,7 +13,6 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QResizeEvent>
 #include <QSettings>
 #include <QSlider>
 #include <QStatusBar>
@@ -34,6 +33,7 @@
 #include "core/solve/path_handles.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/drag_handles.h"
+#include "ui/widgets/error_estimate_label.h"
 #include "ui/widgets/holds_panel.h"
 #include "ui/widgets/loads_panel.h"
 #include "ui/widgets/material_dialog.h"
@@ -212,12 +212,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // The run's error estimate stands at the status bar's right, beside the
   // summary the bar shows when the run is done, and stays there when other
   // messages replace that summary.
-  estimate_label_ = new QLabel(this);
-  estimate_label_->setObjectName("errorEstimate");
-  estimate_label_->setMinimumWidth(1);  // elided, never widens the window
-  estimate_label_->hide();
-  statusBar()->addPermanentWidget(estimate_label_);
-  connect(statusBar(), &QStatusBar::messageChanged, this, &MainWindow::fitEstimate);
+  estimate_label_ = new ErrorEstimateLabel(statusBar());
   buildActions();
   updateControls();
   // Seven editors share the left dock area: their tabs stand on its side.
@@ -537,8 +532,7 @@ void MainWindow::onDocumentChanged() {
   if (!model_ || model->NodeCount() != model_->NodeCount()) clearPicked();
   model_ = std::move(model);
   steps_.clear();
-  estimate_.reset();
-  showEstimate({}, {});
+  estimate_label_->clear();
   rebuildRenderer();
   timeline_->setRange(0, 0);
   showStep(0);
@@ -808,9 +802,8 @@ void MainWindow::run() {
   residual_plot_->clear();
   reaction_plot_->clear();
   reaction_plot_->setScene(scene_);
-  estimate_.reset();
   estimating_ = false;
-  showEstimate({}, {});
+  estimate_label_->clear();
   timeline_->setRange(0, 0);
   follow_ = true;
   handles_->clear();  // no edits while the run goes on
@@ -881,62 +874,29 @@ void MainWindow::onStep(std::shared_ptr<const StepState> step) {
   }
 }
 
+const std::optional<ErrorEstimate>& MainWindow::errorEstimate() const {
+  return estimate_label_->estimate();
+}
+
+QLabel* MainWindow::errorEstimateLabel() const {
+  return estimate_label_;
+}
+
 // The run is complete; the worker solves the scene again on meshes 2h and
 // 4h (Stop ends that too).
 void MainWindow::onEstimating() {
   estimating_ = true;
   statusBar()->showMessage("estimating the error on meshes 2 and 4 times coarser…");
-  showEstimate("estimating the error…",
-               "The run is complete: the scene is solved again on meshes 2 and 4 times "
-               "coarser to estimate its error (Richardson). Stop ends the estimate.");
+  estimate_label_->showEstimating();
   updateControls();
 }
 
-// Describe()'s line; the tooltip has each probe's numbers, or only the
-// reason when the meshes are not in the asymptotic range.
 void MainWindow::onErrorEstimated(const ErrorEstimate& estimate) {
-  estimate_ = estimate;
-  QString tooltip = QString::fromStdString(Describe(estimate));
-  if (estimate.in_asymptotic_range) {
-    tooltip += QString("\n\nobserved order %1; per probe:").arg(estimate.order, 0, 'f', 2);
-    for (const ProbeErrorEstimate& p : estimate.probes)
-      tooltip += QString("\n%1: error %2 mm, GCI ±%3 mm, extrapolated (%4, %5, %6) mm")
-                     .arg(QString::fromStdString(p.name))
-                     .arg(1e3 * p.error, 0, 'g', 3)
-                     .arg(1e3 * p.gci, 0, 'g', 3)
-                     .arg(1e3 * p.extrapolated.x(), 0, 'f', 3)
-                     .arg(1e3 * p.extrapolated.y(), 0, 'f', 3)
-                     .arg(1e3 * p.extrapolated.z(), 0, 'f', 3);
-  }
-  showEstimate(QString::fromStdString(Describe(estimate)), tooltip);
-}
-
-// The label's text elided to what the bar's message (the run's summary)
-// leaves, and at least a third of the bar; the whole line is in the tooltip.
-void MainWindow::showEstimate(const QString& text, const QString& tooltip) {
-  estimate_text_ = text;
-  estimate_label_->setToolTip(tooltip);
-  estimate_label_->setVisible(!text.isEmpty());
-  fitEstimate();
-}
-
-void MainWindow::fitEstimate() {
-  const QStatusBar* bar = statusBar();
-  const int message = bar->fontMetrics().horizontalAdvance(bar->currentMessage());
-  const int room = std::max(bar->width() / 3, bar->width() - message - 48);
-  estimate_label_->setText(
-      estimate_label_->fontMetrics().elidedText(estimate_text_, Qt::ElideRight, room));
-}
-
-void MainWindow::resizeEvent(QResizeEvent* event) {
-  QMainWindow::resizeEvent(event);
-  fitEstimate();
+  estimate_label_->showEstimate(estimate);
 }
 
 void MainWindow::onFinished(const SolveSummary& summary) {
-  if (estimating_ && !estimate_)
-    showEstimate("error estimate: stopped before it was done",
-                 "Stop ended the estimate; the run's own result is complete.");
+  if (estimating_ && !estimate_label_->estimate()) estimate_label_->showStopped();
   estimating_ = false;
   running_ = false;
   document_->setLocked(false);

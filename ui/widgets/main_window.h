@@ -20,7 +20,6 @@
 
 class QAction;
 class QCloseEvent;
-class QResizeEvent;
 class QDockWidget;
 class QMenu;
 class QComboBox;
@@ -30,6 +29,8 @@ class QThread;
 class QTimer;
 
 namespace drape {
+
+class ErrorEstimateLabel;
 
 class DragHandles;
 class HoldsPanel;
@@ -95,8 +96,8 @@ class MainWindow : public QMainWindow {
   // The last run's error estimate (solver.error_estimate), shown beside its
   // summary in the status bar: Describe()'s line, the per-probe errors in
   // its tooltip. Empty before the run's estimate came, or without one.
-  const std::optional<ErrorEstimate>& errorEstimate() const { return estimate_; }
-  QLabel* errorEstimateLabel() const { return estimate_label_; }
+  const std::optional<ErrorEstimate>& errorEstimate() const;
+  QLabel* errorEstimateLabel() const;
 
   // The colour field ("" for none, else a name of Fields()).
   bool setField(const QString& name);
@@ -141,9 +142,6 @@ class MainWindow : public QMainWindow {
   void rememberRecent(const QString& file);
   void rebuildRecentMenu();
   void closeEvent(QCloseEvent* event) override;
-  void resizeEvent(QResizeEvent* event) override;
-  void showEstimate(const QString& text, const QString& tooltip);
-  void fitEstimate();
   void onDocumentChanged();
   void rebuildRenderer();
   void updateControls();
@@ -192,9 +190,7 @@ class MainWindow : public QMainWindow {
   QMenu* recent_menu_ = nullptr;
   RenderOptions view_;
   QLabel* step_label_ = nullptr;
-  QLabel* estimate_label_ = nullptr;  // in the status bar, beside the run's summary
-  QString estimate_text_;             // the label's text before eliding
-  std::optional<ErrorEstimate> estimate_;
+  ErrorEstimateLabel* estimate_label_ = nullptr;  // in the status bar, beside the run's summary
   bool estimating_ = false;  // the run is done; its error estimate is under way
   QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr, *pick_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
