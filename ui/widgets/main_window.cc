@@ -17,7 +17,6 @@
 #include <QSlider>
 #include <QStatusBar>
 #include <QTabWidget>
-#include <QThread>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -45,10 +44,10 @@
 #include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/reaction_plot.h"
+#include "ui/widgets/run_controller.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/scene_keeper.h"
-#include "ui/widgets/solver_worker.h"
 #include "ui/widgets/stages_panel.h"
 #include "ui/widgets/vtk_viewport.h"
 
@@ -70,6 +69,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   qRegisterMetaType<drape::SolveSummary>();
   qRegisterMetaType<drape::ErrorEstimate>();
   qRegisterMetaType<std::shared_ptr<const drape::StepState>>();
+  runs_ = new RunController(this);
+  connect(runs_, &RunController::stepConverged, this, &MainWindow::onStep);
+  connect(runs_, &RunController::estimating, this, &MainWindow::onEstimating);
+  connect(runs_, &RunController::estimated, this, &MainWindow::onErrorEstimated);
+  connect(runs_, &RunController::failed, this, &MainWindow::onFailed);
+  connect(runs_, &RunController::finished, this, &MainWindow::onFinished);
   setWindowTitle("Drape Studio");
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
@@ -279,7 +284,7 @@ bool MainWindow::autosave() {
 }
 
 bool MainWindow::recoverAutosave() {
-  if (running_ || !QFileInfo::exists(autosavePath())) return false;
+  if (isRunning() || !QFileInfo::exists(autosavePath())) return false;
   const KeeperOutcome recovered = SceneKeeper::Recover(*document_);
   if (recovered.done)
     statusBar()->showMessage(recovered.message);
@@ -325,11 +330,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 MainWindow::~MainWindow() {
-  stop();
-  if (thread_) {
-    thread_->quit();
-    thread_->wait();
-  }
+  delete runs_;  // stops the run and joins its thread before the window goes
+  runs_ = nullptr;
   // The renderer's actors live in the viewport's window: release them while
   // the GL context exists.
   viewport_->makeCurrent();
@@ -444,28 +446,28 @@ void MainWindow::buildActions() {
 
 void MainWindow::updateControls() {
   const bool loaded = model_ != nullptr;
-  open_->setEnabled(!running_);
-  run_->setEnabled(loaded && !running_);
+  open_->setEnabled(!isRunning());
+  run_->setEnabled(loaded && !isRunning());
   // A run works on the scene it started with: no edits meanwhile.
-  properties_->setEnabled(!running_);
-  stages_->setEnabled(!running_);
-  supports_->setEnabled(!running_);
-  grippers_->setEnabled(!running_);
-  obstacles_->setEnabled(!running_);
-  loads_->setEnabled(!running_);
-  probes_->setEnabled(!running_);
-  material_->setEnabled(!running_ && model_ != nullptr);
-  undo_->setEnabled(!running_ && document_->undoStack()->canUndo());
-  redo_->setEnabled(!running_ && document_->undoStack()->canRedo());
-  pause_->setEnabled(running_);
-  pause_->setText(paused_ ? "Resume" : "Pause");
+  properties_->setEnabled(!isRunning());
+  stages_->setEnabled(!isRunning());
+  supports_->setEnabled(!isRunning());
+  grippers_->setEnabled(!isRunning());
+  obstacles_->setEnabled(!isRunning());
+  loads_->setEnabled(!isRunning());
+  probes_->setEnabled(!isRunning());
+  material_->setEnabled(!isRunning() && model_ != nullptr);
+  undo_->setEnabled(!isRunning() && document_->undoStack()->canUndo());
+  redo_->setEnabled(!isRunning() && document_->undoStack()->canRedo());
+  pause_->setEnabled(isRunning());
+  pause_->setText(isPaused() ? "Resume" : "Pause");
   // One step of the run: the estimate's runs on coarser meshes have none.
-  step_->setEnabled(running_ && paused_ && !estimating_);
-  stop_->setEnabled(running_);
+  step_->setEnabled(isRunning() && isPaused() && !estimating_);
+  stop_->setEnabled(isRunning());
 }
 
 bool MainWindow::openScene(const QString& file) {
-  if (running_) return false;
+  if (isRunning()) return false;
   try {
     // Checked whole before the document takes it: a scene that cannot be
     // modelled is refused with the reader's or the engine's message.
@@ -482,7 +484,7 @@ bool MainWindow::openScene(const QString& file) {
 }
 
 bool MainWindow::newFromTemplate(const QString& file) {
-  if (running_) return false;
+  if (isRunning()) return false;
   try {
     BuildShellModel(ReadScene(file.toStdString()));
     document_->openTemplate(file);
@@ -510,7 +512,7 @@ bool MainWindow::saveScene(const QString& file) {
 // steps of an earlier run no longer belong to it. An edit the engine cannot
 // model is taken back with its message.
 void MainWindow::onDocumentChanged() {
-  if (running_) return;  // cannot happen: edits are off during a run
+  if (isRunning()) return;  // cannot happen: edits are off during a run
   std::unique_ptr<ShellModel> model;
   try {
     model = std::make_unique<ShellModel>(BuildShellModel(document_->scene()));
@@ -584,7 +586,7 @@ void MainWindow::updateHandles() {
   handles_->clear();
   obstacle_handles_->clear();
   viewport_->requestRender();
-  if (running_ || !renderer_) return;
+  if (isRunning() || !renderer_) return;
   if (stages_shown_) {
     // A gripper's path or an obstacle's: each starts where its carried
     // point is when the stage begins.
@@ -722,7 +724,7 @@ void MainWindow::play() {
 }
 
 ExportedRun MainWindow::exportedRun() const {
-  return {&scene_, model_.get(), &steps_, currentStep(), running_};
+  return {&scene_, model_.get(), &steps_, currentStep(), isRunning()};
 }
 
 // The viewport's look at the viewport's size: a picture shows what the
@@ -795,7 +797,7 @@ void MainWindow::showStep(int index) {
 }
 
 void MainWindow::run() {
-  if (!model_ || running_) return;
+  if (!model_ || isRunning()) return;
   steps_.clear();
   plot_->clear();
   probe_plot_->clear();
@@ -808,53 +810,28 @@ void MainWindow::run() {
   follow_ = true;
   handles_->clear();  // no edits while the run goes on
   obstacle_handles_->clear();
-  thread_ = new QThread(this);
-  worker_ = new SolverWorker;
-  worker_->moveToThread(thread_);
-  connect(thread_, &QThread::finished, worker_, &QObject::deleteLater);
-  connect(worker_, &SolverWorker::stepConverged, this, &MainWindow::onStep, Qt::QueuedConnection);
-  connect(worker_,
-          &SolverWorker::estimatingError,
-          this,
-          &MainWindow::onEstimating,
-          Qt::QueuedConnection);
-  connect(worker_,
-          &SolverWorker::errorEstimated,
-          this,
-          &MainWindow::onErrorEstimated,
-          Qt::QueuedConnection);
-  connect(worker_, &SolverWorker::finished, this, &MainWindow::onFinished, Qt::QueuedConnection);
-  connect(worker_, &SolverWorker::failed, this, &MainWindow::onFailed, Qt::QueuedConnection);
-  thread_->start();
-  running_ = true;
+  runs_->start(scene_);
   document_->setLocked(true);
-  paused_ = false;
   updateControls();
   statusBar()->showMessage("running…");
-  const Scene scene = scene_;
-  QMetaObject::invokeMethod(
-      worker_, [w = worker_, scene] { w->run(scene); }, Qt::QueuedConnection);
 }
 
 void MainWindow::pauseOrResume() {
-  if (!running_) return;
-  paused_ = !paused_;
-  paused_ ? worker_->pause() : worker_->resume();
+  runs_->pauseOrResume();
   updateControls();
 }
 
 void MainWindow::stepOnce() {
-  if (running_ && paused_) worker_->step();
+  runs_->stepOnce();
 }
 
 void MainWindow::stop() {
-  if (running_ && worker_) worker_->stop();
+  runs_->stop();
 }
 
 // Every step is kept and plotted; the view draws only the newest of the
 // steps that arrived together (one draw after the queued ones are taken).
 void MainWindow::onStep(std::shared_ptr<const StepState> step) {
-  if (worker_) worker_->consumed();
   plot_->add(*step);
   probe_plot_->add(*step);
   residual_plot_->add(*step);
@@ -872,6 +849,13 @@ void MainWindow::onStep(std::shared_ptr<const StepState> step) {
       showStep(stepCount());
     });
   }
+}
+
+bool MainWindow::isRunning() const {
+  return runs_ && runs_->isRunning();
+}
+bool MainWindow::isPaused() const {
+  return runs_ && runs_->isPaused();
 }
 
 const std::optional<ErrorEstimate>& MainWindow::errorEstimate() const {
@@ -898,14 +882,7 @@ void MainWindow::onErrorEstimated(const ErrorEstimate& estimate) {
 void MainWindow::onFinished(const SolveSummary& summary) {
   if (estimating_ && !estimate_label_->estimate()) estimate_label_->showStopped();
   estimating_ = false;
-  running_ = false;
   document_->setLocked(false);
-  paused_ = false;
-  thread_->quit();
-  thread_->wait();
-  thread_->deleteLater();
-  thread_ = nullptr;
-  worker_ = nullptr;
   statusBar()->showMessage(QString::fromStdString(summary.BriefReport()));
   updateControls();
   updateHandles();
@@ -913,11 +890,7 @@ void MainWindow::onFinished(const SolveSummary& summary) {
 }
 
 void MainWindow::onFailed(const QString& message) {
-  SolveSummary summary;
-  summary.termination = Termination::kInvalidInput;
-  summary.message = message.toStdString();
   ShowError(this, "The run could not start", message);
-  onFinished(summary);
 }
 
 }  // namespace drape

@@ -25,12 +25,12 @@ class QMenu;
 class QComboBox;
 class QLabel;
 class QSlider;
-class QThread;
 class QTimer;
 
 namespace drape {
 
 class ErrorEstimateLabel;
+class RunController;
 
 class DragHandles;
 class HoldsPanel;
@@ -46,7 +46,6 @@ class PropertyPanel;
 class RunPlot;
 class StagesPanel;
 class SceneDocument;
-class SolverWorker;
 class VtkViewport;
 
 class MainWindow : public QMainWindow {
@@ -91,8 +90,8 @@ class MainWindow : public QMainWindow {
   // Step `i` (1-based, as the timeline counts).
   const StepState& step(int i) const { return *steps_.at(i - 1); }
   int currentStep() const;
-  bool isRunning() const { return running_; }
-  bool isPaused() const { return paused_; }
+  bool isRunning() const;
+  bool isPaused() const;
   // The last run's error estimate (solver.error_estimate), shown beside its
   // summary in the status bar: Describe()'s line, the per-probe errors in
   // its tooltip. Empty before the run's estimate came, or without one.
@@ -194,9 +193,8 @@ class MainWindow : public QMainWindow {
   bool estimating_ = false;  // the run is done; its error estimate is under way
   QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr, *pick_ = nullptr;
   QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
-  QThread* thread_ = nullptr;
-  SolverWorker* worker_ = nullptr;
-  bool running_ = false, paused_ = false, follow_ = true;
+  RunController* runs_ = nullptr;  // the solver's thread while a run goes on
+  bool follow_ = true;
   bool draw_pending_ = false;    // the newest step is to be drawn
   bool camera_touched_ = false;  // since the renderer was made
 };
