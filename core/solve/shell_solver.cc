@@ -701,6 +701,7 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
   bool has_previous = false;
   int cuts_in_a_row = 0;
   double last_landing = NAN;  // λ where the last branch switch landed
+  double lowest = 0;          // the smallest λ the path reached
   while (lambda < 1.0 - 1e-12) {
     if (summary.steps >= options.max_steps) {
       StopAtMaxSteps(spec, lambda);
@@ -764,6 +765,7 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
       continue;
     }
     lambda = step.landed ? 1.0 : step.lambda;
+    lowest = std::min(lowest, lambda);
     previous = step.direction;
     has_previous = true;
     ++stage.steps;
@@ -777,6 +779,19 @@ bool ShellSolver::Impl::RunArcLength(int index, const StageLoading& loading, Sta
       arc_length *= std::clamp(gamma, options.min_step_growth, options.max_step_growth);
     }
     arc_length = std::min(arc_length, max_arc_length);
+  }
+  if (lowest < -1e-6) {
+    // The end is an equilibrium, but the path to it needed the load
+    // reversed: going forward, a real part jumps there instead.
+    char note[320];
+    std::snprintf(note,
+                  sizeof note,
+                  "stage '%s' reached λ = 1 only after its path ran back to λ = %.3g (the load "
+                  "reversed): past a limit point the part would snap, and its end state is "
+                  "reached by a jump no quasi-static path makes",
+                  spec.name.c_str(),
+                  lowest);
+    summary.warnings.push_back(note);
   }
   return true;
 }

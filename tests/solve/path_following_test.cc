@@ -206,6 +206,34 @@ TEST(PathFollowing, ABranchThatBendsBackIsNotGoneRoundForever) {
               summary.message.c_str());
 }
 
+// A path that reaches λ = 1 only through a reversed load (seed 2 of the
+// same sheet: down to λ = −0.93, then up again) ends on an equilibrium, but
+// a real part jumps there: the run says so in its warnings. A path that
+// never goes below λ = 0 (the diagonal fold, above) has no such warning.
+TEST(PathFollowing, APathThroughAReversedLoadSaysSo) {
+  auto warns = [](const SolveSummary& summary) {
+    for (const auto& w : summary.warnings)
+      if (w.find("only after its path ran back to λ = ") != std::string::npos) return true;
+    return false;
+  };
+  Scene scene = ReadScene(test::SourceDir() / "tests" / "data" / "block-pins-seed2.json");
+  double lowest = 0;
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    lowest = std::min(lowest, s.lambda);
+    return StepDecision::kContinue;
+  }});
+  ASSERT_TRUE(summary.IsComplete()) << summary.message;
+  EXPECT_LT(lowest, -0.5);
+  EXPECT_TRUE(warns(summary));
+  Scene fold = ReadScene(test::ScenesDir() / "diagonal-fold.json");
+  fold.solver = WithPreset(fold.solver, SolverPreset::kDraft);
+  ShellSolver folding(fold, SolverOptions::FromScene(fold.solver));
+  const SolveSummary folded = folding.Solve({});
+  ASSERT_TRUE(folded.IsComplete()) << folded.message;
+  EXPECT_FALSE(warns(folded));
+}
+
 TEST(PathFollowing, ANodeAskedToBeInTwoPlacesIsRejected) {
   Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
   // The far-end support also takes the gripped left edge: the gripper would
