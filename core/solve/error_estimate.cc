@@ -142,6 +142,14 @@ ErrorEstimate EstimateError(const Scene& written,
     const std::optional<Scene> coarse = CoarsenedScene(scene, factor, &why);
     if (!coarse) {
       failed.reason = "no mesh " + std::to_string(factor) + " times coarser: " + why;
+      if (written.solver.mesh_scale != 1) {
+        char scale[96];
+        std::snprintf(scale,
+                      sizeof scale,
+                      " (the mesh solved: fabric.mesh at solver.mesh_scale %g)",
+                      written.solver.mesh_scale);
+        failed.reason += scale;
+      }
       return failed;
     }
     failed.meshes[level] = MeshName(*coarse);

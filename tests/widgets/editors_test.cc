@@ -649,7 +649,8 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   EXPECT_EQ(panel->tolerance()->edit()->text().toStdString(), "0.0001");
   // Half the 80 x 2 strip's elements along it; its width of two stays: 40 x 2.
   EXPECT_EQ(panel->meshInfo()->text().toStdString(),
-            "123 nodes, 80 elements, 615 DOFs (solved at 0.5 × these counts: accuracy draft)");
+            "solved on 123 nodes, 80 elements, 615 DOFs: 0.5 × the element counts above "
+            "(accuracy draft)");
   EXPECT_EQ(doc->scene().fabric.mesh.elements, (std::array<int, 2>{80, 2}));
   // Undo brings the scene's own settings back in one step.
   doc->undoStack()->undo();

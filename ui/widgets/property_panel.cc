@@ -110,6 +110,7 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   ny_ = new QSpinBox(fabric);
   for (QSpinBox* s : {nx_, ny_}) s->setRange(1, 400);
   mesh_info_ = new QLabel(fabric);
+  mesh_info_->setWordWrap(true);  // the solved mesh of a preset makes it long
   fabric_message_ = MakeMessageLabel(fabric);
   fabric_form->addRow("outline", shape_);
   fabric_form->addRow("size", extent_);
@@ -506,9 +507,11 @@ void PropertyPanel::refresh() {
                        .arg(mesh.ElementCount())
                        .arg(5 * mesh.NodeCount());
     if (s.solver.mesh_scale != 1)
-      info += QString(" (solved at %1 × these counts: accuracy %2)")
-                  .arg(s.solver.mesh_scale)
-                  .arg(s.solver.preset ? ToString(*s.solver.preset) : "mesh scale");
+      info = QString("solved on %1: %2 × the element counts above (%3)")
+                 .arg(info)
+                 .arg(s.solver.mesh_scale)
+                 .arg(s.solver.preset ? QString("accuracy ") + ToString(*s.solver.preset)
+                                      : QString("solver.mesh_scale"));
     mesh_info_->setText(info);
   } catch (const std::exception& e) {
     mesh_info_->setText(QString::fromStdString(e.what()));
