@@ -535,3 +535,50 @@ TEST_F(Widgets, StudioRunsAScriptAndWritesANonBlackScreenshot) {
 
 }  // namespace
 }  // namespace drape
+
+namespace drape {
+namespace {
+
+// The view's colour map: viridis by default, the rainbow on request, and
+// the exported picture in the one chosen. On the flat reference state every
+// node's curvature is 0, the low end of the map: viridis's dark violet (hue
+// 289°) or the rainbow's blue (240°).
+TEST_F(Widgets, TheColourMapIsViridisOrTheRainbowAsChosen) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openScene(
+      QString::fromStdString((test::ScenesDir() / "strip-convergence-20.json").string())));
+  ASSERT_TRUE(window.setField("curvature"));
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / ("drape-colour-map-" + std::to_string(getpid())))
+          .string();
+  std::filesystem::create_directories(dir);
+  auto low_end = [&](const char* name, int low_hue, int high_hue) {
+    const QString file = QString::fromStdString(dir + "/" + name + ".png");
+    QString error;
+    EXPECT_TRUE(window.exportImage(file, &error)) << error.toStdString();
+    const QImage image(file);
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const QColor c(image.pixel(x, y));
+        n += c.hsvSaturation() > 120 && c.hsvHue() >= low_hue && c.hsvHue() <= high_hue;
+      }
+    return n;
+  };
+  const int viridis = low_end("viridis", 275, 305);
+  EXPECT_TRUE(window.setColourMap("rainbow"));
+  const int rainbow_in_violet = low_end("rainbow-violet", 275, 305);
+  const int rainbow = low_end("rainbow", 225, 255);
+  std::printf(
+      "low-end pixels: viridis %d; rainbow %d (violet %d)\n", viridis, rainbow, rainbow_in_violet);
+  EXPECT_GT(viridis, 500);
+  EXPECT_GT(rainbow, 500);
+  EXPECT_LT(rainbow_in_violet, viridis / 10);
+  EXPECT_FALSE(window.setColourMap("jet"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace drape

@@ -89,6 +89,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   field_ = new QComboBox(central);
   field_->addItem("fabric colours", "");
   for (const auto& f : Fields()) field_->addItem(f.title, f.name);
+  colour_map_ = new QComboBox(central);
+  for (ColourMap m : {ColourMap::kViridis, ColourMap::kRainbow})
+    colour_map_->addItem(ToString(m), ToString(m));
+  colour_map_->setToolTip(
+      "Colours of the field: viridis (perceptually uniform, reads in grey) or the rainbow");
   auto* play = new QAction("Play", this);
   connect(play, &QAction::triggered, this, &MainWindow::play);
   auto* play_button = new QToolButton(central);
@@ -97,6 +102,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   timeline->addWidget(timeline_, 1);
   timeline->addWidget(step_label_);
   timeline->addWidget(field_);
+  timeline->addWidget(colour_map_);
   player_ = new QTimer(this);
   player_->setInterval(40);
   connect(player_, &QTimer::timeout, this, [this] {
@@ -105,6 +111,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(field_, &QComboBox::currentIndexChanged, this, [this](int) {
     setField(field_->currentData().toString());
+  });
+  connect(colour_map_, &QComboBox::currentIndexChanged, this, [this](int) {
+    setColourMap(colour_map_->currentData().toString());
   });
   layout->addLayout(timeline);
   setCentralWidget(central);
@@ -710,6 +719,21 @@ bool MainWindow::setField(const QString& name) {
   if (index >= 0 && index != field_->currentIndex()) {
     const QSignalBlocker block(field_);
     field_->setCurrentIndex(index);
+  }
+  if (!model_) return true;
+  rebuildRenderer();
+  showStep(currentStep());
+  return true;
+}
+
+bool MainWindow::setColourMap(const QString& name) {
+  const auto map = ColourMapNamed(name.toStdString());
+  if (!map) return false;
+  view_.colour_map = *map;
+  const int index = colour_map_->findData(name);
+  if (index != colour_map_->currentIndex()) {
+    const QSignalBlocker block(colour_map_);
+    colour_map_->setCurrentIndex(index);
   }
   if (!model_) return true;
   rebuildRenderer();

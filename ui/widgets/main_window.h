@@ -100,6 +100,8 @@ class MainWindow : public QMainWindow {
 
   // The colour field ("" for none, else a name of Fields()).
   bool setField(const QString& name);
+  // Its colours: "viridis" (the default) or "rainbow".
+  bool setColourMap(const QString& name);
   // The camera fitted to the run from "iso", "front", "top" or "side" (as
   // `drape render --camera`); also how to get the view back after turning it.
   bool setCamera(const QString& view);
@@ -184,6 +186,7 @@ class MainWindow : public QMainWindow {
   std::vector<int> picked_;
   QSlider* timeline_ = nullptr;
   QComboBox* field_ = nullptr;
+  QComboBox* colour_map_ = nullptr;
   QTimer* player_ = nullptr;
   QTimer* autosave_timer_ = nullptr;
   QMenu* recent_menu_ = nullptr;
