@@ -10,7 +10,6 @@
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkPNGWriter.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotLine.h>
@@ -22,12 +21,13 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform2D.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+
+#include "ui/render/offscreen_chart.h"
 
 namespace drape {
 namespace {
@@ -169,15 +169,8 @@ void WriteFrontChart(const std::vector<FrontPoint>& points,
         "converge?)");
   std::sort(front.begin(), front.end());
 
-  vtkNew<vtkContextView> view;
-  view->GetRenderWindow()->SetOffScreenRendering(1);
-  view->GetRenderWindow()->SetSize(options.width, options.height);
-  view->GetRenderWindow()->SetMultiSamples(0);
-  view->GetRenderer()->SetBackground(1, 1, 1);
-  vtkNew<vtkChartXY> chart;
-  view->GetScene()->AddItem(chart);
-  chart->SetTitle(options.title);
-  chart->GetTitleProperties()->SetFontSize(18);
+  OffscreenChart drawing(options.width, options.height, options.title);
+  vtkChartXY* chart = drawing.chart.GetPointer();
 
   if (front.size() > 1) {
     vtkPlot* line = chart->AddPlot(vtkChart::LINE);
@@ -213,18 +206,8 @@ void WriteFrontChart(const std::vector<FrontPoint>& points,
     a->GetLabelProperties()->SetFontSize(13);
   }
 
-  view->GetRenderWindow()->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(view->GetRenderWindow());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(png.string().c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  std::error_code ec;
-  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(png, ec))
-    throw std::runtime_error("cannot write the image " + png.string());
+  drawing.Render();
+  drawing.WritePng(png);
 }
 
 }  // namespace drape

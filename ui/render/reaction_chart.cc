@@ -9,7 +9,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkPNGWriter.h>
 #include <vtkPen.h>
 #include <vtkPlotLine.h>
 #include <vtkPlotPoints.h>
@@ -19,12 +18,13 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform2D.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+
+#include "ui/render/offscreen_chart.h"
 
 namespace drape {
 namespace {
@@ -154,15 +154,8 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
   if (x_lo > x_hi)
     throw std::invalid_argument("no reaction to draw (no support or gripper, or no step)");
 
-  vtkNew<vtkContextView> view;
-  view->GetRenderWindow()->SetOffScreenRendering(1);
-  view->GetRenderWindow()->SetSize(options.width, options.height);
-  view->GetRenderWindow()->SetMultiSamples(0);
-  view->GetRenderer()->SetBackground(1, 1, 1);
-  vtkNew<vtkChartXY> chart;
-  view->GetScene()->AddItem(chart);
-  chart->SetTitle(options.title);
-  chart->GetTitleProperties()->SetFontSize(18);
+  OffscreenChart drawing(options.width, options.height, options.title);
+  vtkChartXY* chart = drawing.chart.GetPointer();
 
   // Step 1 starts at 0 (the reference state, before any load); a single
   // step gets a width of one either side.
@@ -215,7 +208,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
     a->GetLabelProperties()->SetFontSize(13);
   }
 
-  view->GetRenderWindow()->Render();
+  drawing.Render();
   ChartArea area;
   area.left = static_cast<int>(std::lround(x->GetPoint1()[0]));
   area.right = static_cast<int>(std::lround(x->GetPoint2()[0]));
@@ -226,16 +219,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
   area.force_lo = y->GetMinimum();
   area.force_hi = y->GetMaximum();
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(view->GetRenderWindow());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(png.string().c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(png, ec))
-    throw std::runtime_error("cannot write the image " + png.string());
+  drawing.WritePng(png);
   return area;
 }
 
