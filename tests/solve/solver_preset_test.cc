@@ -100,8 +100,10 @@ TEST(SolverPreset, RunsTheSceneWrittenOutWithItsValues) {
 }
 
 // The heavy elastica at α = 8 (ODE solved in the test) on a 16-element
-// strip: each preset's tip error below the coarser one's, and draft's within
-// 2 % of the length — what "a quick look" promises.
+// strip: each preset's tip error at most a third of the coarser one's (the
+// mesh doubles and the element is second order: a quarter, measured 1.13e-3,
+// 2.81e-4, 7.08e-5 m), and draft's within 1 % of the length — what "a quick
+// look" promises.
 TEST(SolverPreset, ErrorFallsFromDraftToAccurateOnTheHeavyElastica) {
   const double alpha = 8;
   const test::ElasticaEnd exact = test::SolveHeavyElastica(alpha);
@@ -118,8 +120,8 @@ TEST(SolverPreset, ErrorFallsFromDraftToAccurateOnTheHeavyElastica) {
         std::hypot(s.tip.x() - exact.x * spec.length, s.tip.z() - exact.z * spec.length);
     std::printf(
         "heavy elastica α = 8, %s: %d elements, tip error %.3e m\n", p.name, s.elements, error);
-    EXPECT_LT(error, previous) << p.name;
-    EXPECT_LT(error, 0.02 * spec.length) << p.name;
+    EXPECT_LT(error, previous / 3) << p.name;
+    EXPECT_LT(error, 0.01 * spec.length) << p.name;
     previous = error;
   }
 }

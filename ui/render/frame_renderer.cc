@@ -10,7 +10,6 @@
 #include <vtkGlyph3D.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -35,6 +34,7 @@
 #include <stdexcept>
 
 #include "ui/render/scene_actors.h"
+#include "ui/render/window_png.h"
 
 namespace drape {
 namespace {
@@ -532,17 +532,7 @@ std::vector<unsigned char> FrameRenderer::CaptureRgb() {
 }
 
 void FrameRenderer::WritePng(const std::filesystem::path& file) {
-  auto grab = Ptr<vtkWindowToImageFilter>::New();
-  grab->SetInput(impl_->window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  auto writer = Ptr<vtkPNGWriter>::New();
-  writer->SetFileName(file.string().c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  std::error_code ec;
-  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(file, ec))
-    throw std::runtime_error("cannot write the image " + file.string());
+  WriteWindowPng(impl_->window, file);
 }
 
 int FrameRenderer::width() const {

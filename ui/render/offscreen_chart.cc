@@ -1,14 +1,11 @@
 #include "ui/render/offscreen_chart.h"
 
 #include <vtkContextScene.h>
-#include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
-#include <stdexcept>
-#include <system_error>
+#include "ui/render/window_png.h"
 
 namespace drape {
 
@@ -27,17 +24,7 @@ void OffscreenChart::Render() {
 }
 
 void OffscreenChart::WritePng(const std::filesystem::path& png) {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(view->GetRenderWindow());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(png.string().c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  std::error_code ec;
-  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(png, ec))
-    throw std::runtime_error("cannot write the image " + png.string());
+  WriteWindowPng(view->GetRenderWindow(), png);
 }
 
 }  // namespace drape

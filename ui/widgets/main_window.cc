@@ -56,6 +56,14 @@ namespace {
 
 // Errors are shown without blocking: a run started by a script must not
 // wait for someone to click OK.
+// The menu shows the choice made by a call, without calling back.
+void ShowChoice(QComboBox* box, const QString& data) {
+  const int index = box->findData(data);
+  if (index < 0 || index == box->currentIndex()) return;
+  const QSignalBlocker block(box);
+  box->setCurrentIndex(index);
+}
+
 void ShowError(QWidget* parent, const QString& title, const QString& message) {
   auto* box = new QMessageBox(QMessageBox::Critical, title, message, QMessageBox::Ok, parent);
   box->setAttribute(Qt::WA_DeleteOnClose);
@@ -701,9 +709,7 @@ bool MainWindow::setCamera(const QString& view) {
   if (!QStringList{"iso", "front", "top", "side"}.contains(view)) return false;
   view_.camera = CameraSpec{};
   view_.camera.view = view.toStdString();
-  if (!model_) return true;
-  rebuildRenderer();
-  showStep(currentStep());
+  redrawView();
   return true;
 }
 
@@ -715,14 +721,8 @@ bool MainWindow::setField(const QString& name) {
     kind = f->kind;
   }
   view_.field = kind;
-  const int index = field_->findData(name);
-  if (index >= 0 && index != field_->currentIndex()) {
-    const QSignalBlocker block(field_);
-    field_->setCurrentIndex(index);
-  }
-  if (!model_) return true;
-  rebuildRenderer();
-  showStep(currentStep());
+  ShowChoice(field_, name);
+  redrawView();
   return true;
 }
 
@@ -730,15 +730,16 @@ bool MainWindow::setColourMap(const QString& name) {
   const auto map = ColourMapNamed(name.toStdString());
   if (!map) return false;
   view_.colour_map = *map;
-  const int index = colour_map_->findData(name);
-  if (index != colour_map_->currentIndex()) {
-    const QSignalBlocker block(colour_map_);
-    colour_map_->setCurrentIndex(index);
-  }
-  if (!model_) return true;
+  ShowChoice(colour_map_, name);
+  redrawView();
+  return true;
+}
+
+// The view's look changed: a renderer built with it, on the step shown.
+void MainWindow::redrawView() {
+  if (!model_) return;
   rebuildRenderer();
   showStep(currentStep());
-  return true;
 }
 
 void MainWindow::play() {

@@ -149,6 +149,7 @@ class MainWindow : public QMainWindow {
   void updateHandles();
   void WarnOfNodeNumbers(const Scene& scene);
   ExportedRun exportedRun() const;
+  void redrawView();
   RenderOptions viewportLook() const;
   // A written (or cancelled) export in the status bar; otherwise its reason in `error`.
   bool report(const ExportOutcome& outcome, QString* error);
