@@ -26,6 +26,8 @@ using CommandRunner = std::function<int()>;
 void AddValidateCommand(CLI::App& app, CommandRunner& runner);
 // Adds `run SCENE -o DIR [--quiet] [--verbose] [--threads N]`.
 void AddRunCommand(CLI::App& app, CommandRunner& runner);
+// Adds `drag SCENE --gripper NAME --by dx,dy,dz [--frames N] -o DIR`.
+void AddDragCommand(CLI::App& app, CommandRunner& runner);
 // Adds `study STUDY -o DIR [--jobs N] [--emit slurm|parallel]` and `study DIR --collect`.
 void AddStudyCommand(CLI::App& app, CommandRunner& runner);
 // Adds `material fit FILE …` and `material list`.

@@ -1,23 +1,21 @@
 // `drape run SCENE -o DIR [--quiet] [--verbose]`: solve a scene and write
 // DIR/result.json and DIR/states.bin. Exit codes: 0 converged, 1 invalid
 // input, 2 solver failure (partial result written), 130 cancelled.
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 
-#include <csignal>
-#include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "app/commands.h"
 #include "app/render_program.h"
-#include "core/io/result_writer.h"
+#include "app/run_session.h"
 #include "core/io/scene_reader.h"
 #include "core/model/scene_error.h"
 #include "core/model/solver_preset.h"
-#include "core/solve/error_estimate.h"
+#include "core/model/unit_system.h"
 #include "core/solve/shell_solver.h"
 
 namespace drape::app {
@@ -33,82 +31,14 @@ struct RunArgs {
   double time_limit_s = 0;      // 0: the scene's solver.max_wall_s
   bool error_estimate = false;  // or the scene's solver.error_estimate
   std::string preset;           // empty: the scene's solver settings
+  std::string units;            // of the report; empty: the scene's own
 };
 
-CancellationToken* g_cancel = nullptr;
-
-extern "C" void OnInterrupt(int) {
-  if (g_cancel) g_cancel->Cancel();
+// The units the scene file is written in (SI when it cannot be read).
+UnitSystem ScenesOwnUnits(const std::string& file) {
+  std::ifstream in(file);
+  return GuessUnitSystem(std::string{std::istreambuf_iterator<char>(in), {}});
 }
-
-// One line, rewritten in place, on a terminal only.
-class ProgressLine {
- public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
-  ~ProgressLine() { Clear(); }
-
-  void Show(const StepState& s, int stability_changes) {
-    if (!enabled_) return;
-    char contact[80] = "";
-    if (s.contact)
-      std::snprintf(contact,
-                    sizeof contact,
-                    "  contact %d nodes, %.3g mm deep",
-                    s.contact->nodes,
-                    1e3 * s.contact->max_penetration);
-    char line[300];
-    std::snprintf(line,
-                  sizeof line,
-                  "\r  stage %-8s step %5d  lambda %.6f  iterations %2d  pivots- %d%s%s  %7.1f s ",
-                  s.stage_name.c_str(),
-                  s.step,
-                  s.lambda,
-                  s.iterations,
-                  s.negative_pivots,
-                  stability_changes ? " (stability changed)" : "",
-                  contact,
-                  s.elapsed_s);
-    std::fputs(line, stderr);
-    shown_ = true;
-  }
-  void Clear() {
-    if (enabled_ && shown_) std::fputs("\r\033[K", stderr);
-    shown_ = false;
-  }
-
- private:
-  bool enabled_;
-  bool shown_ = false;
-};
-
-int ExitCode(Termination t) {
-  switch (t) {
-    case Termination::kCompleted:
-      return 0;
-    case Termination::kCancelled:
-    case Termination::kStoppedByObserver:
-      return 130;
-    case Termination::kInvalidInput:
-      return 1;
-    default:
-      return 2;
-  }
-}
-
-// Ctrl-C and SIGTERM set the token for the whole command, so an interrupt
-// while the model is built or the result is written still ends cleanly.
-struct InterruptGuard {
-  explicit InterruptGuard(CancellationToken& token) {
-    g_cancel = &token;
-    std::signal(SIGINT, OnInterrupt);
-    std::signal(SIGTERM, OnInterrupt);
-  }
-  ~InterruptGuard() {
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-    g_cancel = nullptr;
-  }
-};
 
 int RunRun(const RunArgs& args) {
 #ifndef DRAPE_WITH_RENDER
@@ -129,59 +59,14 @@ int RunRun(const RunArgs& args) {
     std::cerr << "drape run: " << args.scene << ": " << e.what() << "\n";
     return 1;
   }
-  std::unique_ptr<ResultWriter> writer;
-  try {
-    writer = std::make_unique<ResultWriter>(args.output, scene, solver->model());
-  } catch (const std::exception& e) {
-    std::cerr << "drape run: " << e.what() << "\n";
-    return 1;
-  }
-
-  ProgressLine progress(!args.quiet && isatty(STDERR_FILENO));
-  int last_pivots = 0;
-  std::vector<NamedVector> last_probes;
-  StepObserver record = [&](const StepState& s) {
-    writer->AddStep(s);
-    last_probes = s.probes;
-    progress.Show(s, s.negative_pivots != last_pivots);
-    last_pivots = s.negative_pivots;
-    return StepDecision::kContinue;
-  };
-  std::vector<StepObserver> observers = {record};
-  if (args.render_every > 0) {
-    try {
-      observers.push_back(MakeRenderObserver(
-          scene, solver->model(), writer->directory() / "frames", args.render_every));
-    } catch (const std::exception& e) {
-      std::cerr << "drape run: --render-every: " << e.what() << "\n";
-      return 1;
-    }
-  }
-  SolveSummary summary = solver->Solve(observers, &cancel);
-  progress.Clear();
-  std::optional<ErrorEstimate> estimate;
-  if ((args.error_estimate || scene.solver.error_estimate) && summary.IsComplete()) {
-    if (!args.quiet) std::cerr << "  estimating the error on meshes 2 and 4 times coarser\n";
-    estimate = EstimateError(scene, SolverOptions::FromScene(scene.solver), last_probes, &cancel);
-    writer->SetErrorEstimate(*estimate);
-  }
-  try {
-    writer->Finish(summary);
-  } catch (const std::exception& e) {
-    std::cerr << "drape run: " << e.what() << "\n";
-    return 2;
-  }
-  if (!args.quiet) {
-    std::cerr << (args.verbose ? summary.FullReport() : summary.BriefReport() + "\n");
-    if (!args.verbose) {
-      for (const auto& e : summary.stability_events) std::cerr << "  " << Describe(e) << "\n";
-      for (const auto& warning : summary.warnings) std::cerr << "  warning: " << warning << "\n";
-      for (const auto& note : summary.notes) std::cerr << "  note: " << note << "\n";
-    }
-    if (estimate) std::cerr << "  " << Describe(*estimate) << "\n";
-    std::cerr << "  results: " << (writer->directory() / kResultFileName).string() << "\n";
-  }
-  return ExitCode(summary.termination);
+  SolveReport report;
+  report.command = "drape run";
+  report.quiet = args.quiet;
+  report.verbose = args.verbose;
+  report.render_every = args.render_every;
+  report.error_estimate = args.error_estimate;
+  report.units = args.units.empty() ? ScenesOwnUnits(args.scene) : *UnitSystemNamed(args.units);
+  return SolveIntoFolder(scene, *solver, args.output, report, cancel);
 }
 
 }  // namespace
@@ -216,6 +101,12 @@ void AddRunCommand(CLI::App& app, CommandRunner& runner) {
                 "(Richardson; solver.error_estimate)");
   std::vector<std::string> presets;
   for (const PresetDefinition& p : PresetDefinitions()) presets.push_back(p.name);
+  cmd->add_option("--units",
+                  args->units,
+                  "Units of the report's quantities (contact depth, the last step's reactions "
+                  "and probes): si, textile (cm, gf) or imperial (in, oz); default the units the "
+                  "scene is written in")
+      ->check(CLI::IsMember({"si", "textile", "imperial"}));
   cmd->add_option("--preset",
                   args->preset,
                   "Solve at this accuracy preset (solver.preset; overrides the scene's tolerance, "

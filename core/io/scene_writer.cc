@@ -307,4 +307,19 @@ void WriteScene(const Scene& scene, const std::filesystem::path& file) {
   if (!out) throw std::runtime_error("failed while writing scene file '" + file.string() + "'");
 }
 
+Scene WithAbsoluteReferences(const Scene& scene, const std::filesystem::path& folder) {
+  Scene out = scene;
+  auto absolute = [&](std::string& reference) {
+    if (!reference.empty() && std::filesystem::path(reference).is_relative())
+      reference = std::filesystem::absolute(folder / reference).lexically_normal().string();
+  };
+  for (BendingLaw* law : {&out.material.bending.warp,
+                          out.material.bending.weft ? &*out.material.bending.weft : nullptr})
+    if (law)
+      if (auto* curve = std::get_if<CurveBending>(law)) absolute(curve->file);
+  for (Obstacle& o : out.obstacles)
+    if (auto* mesh = std::get_if<MeshShape>(&o.shape)) absolute(mesh->file);
+  return out;
+}
+
 }  // namespace drape

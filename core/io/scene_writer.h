@@ -20,4 +20,9 @@ std::string WriteSceneText(const Scene& scene);
 std::string FormatJson(const nlohmann::ordered_json& document);
 void WriteScene(const Scene& scene, const std::filesystem::path& file);
 
+// `scene` with its relative file references (Kawabata data, obstacle
+// meshes) made absolute from `folder`: to write it somewhere else and have
+// it still find them.
+Scene WithAbsoluteReferences(const Scene& scene, const std::filesystem::path& folder);
+
 }  // namespace drape

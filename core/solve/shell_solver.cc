@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -20,6 +21,7 @@
 #include "core/solve/dof_map.h"
 #include "core/solve/element_fields.h"
 #include "core/solve/equilibrium_system.h"
+#include "core/solve/gripper_drag.h"
 #include "core/solve/mesh_sequencing.h"
 #include "core/solve/newton_solver.h"
 #include "core/solve/node_contact.h"
@@ -1055,6 +1057,34 @@ const ShellModel& ShellSolver::model() const {
 }
 const ShellState& ShellSolver::state() const {
   return impl_->state;
+}
+
+DragBasis ShellSolver::BasisForDrag(const std::string& gripper) {
+  Impl& m = *impl_;
+  DragBasis basis;
+  for (size_t g = 0; g < m.model.grippers.size(); ++g)
+    if (m.model.grippers[g].name == gripper) basis.gripper = static_cast<int>(g);
+  if (basis.gripper < 0) {
+    std::string names;
+    for (const auto& g : m.model.grippers) names += (names.empty() ? "'" : ", '") + g.name + "'";
+    throw std::invalid_argument(
+        "the scene has no gripper '" + gripper + "'" +
+        (names.empty() ? std::string(" (it has none)") : " (it has " + names + ")"));
+  }
+  if (m.summary.termination != Termination::kCompleted || !m.system)
+    throw std::invalid_argument("the run did not complete every stage (" + m.summary.message +
+                                "): there is no end state to drag from");
+  if (m.released[basis.gripper])
+    throw std::invalid_argument("gripper '" + gripper +
+                                "' is released by the scene's stages: only a held gripper can "
+                                "be dragged");
+  basis.model = &m.model;
+  basis.system = m.system.get();
+  basis.contact = m.contact.get();
+  basis.state = m.state;
+  basis.weight_factor = m.weight_done;
+  basis.load_factor = m.loads_done;
+  return basis;
 }
 
 SolveSummary ShellSolver::Solve(const std::vector<StepObserver>& observers,

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/model/scene.h"
@@ -16,6 +17,8 @@
 #include "core/solve/step_state.h"
 
 namespace drape {
+
+struct DragBasis;  // gripper_drag.h
 
 class ShellSolver {
  public:
@@ -34,6 +37,11 @@ class ShellSolver {
 
   const ShellModel& model() const;
   const ShellState& state() const;  // the last converged state
+
+  // Where a drag of `gripper` goes on from after a run that completed every
+  // stage: the last state and the system that holds it (gripper_drag.h).
+  // Throws std::invalid_argument naming what is missing.
+  DragBasis BasisForDrag(const std::string& gripper);
 
  private:
   struct Impl;

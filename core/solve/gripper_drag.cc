@@ -1,0 +1,156 @@
+#include "core/solve/gripper_drag.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <variant>
+
+#include "core/solve/stage_loading.h"
+
+namespace drape {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A residual this close to its round-off level cannot fall further.
+constexpr double kRoundOffFactor = 10;
+
+std::string DragStageName(const std::string& gripper) {
+  return "drag " + gripper;
+}
+
+}  // namespace
+
+GripperDrag::GripperDrag(DragBasis basis, const DragSettings& settings)
+    : basis_(std::move(basis)), settings_(settings) {
+  if (!basis_.model || !basis_.system)
+    throw std::invalid_argument("a drag needs a run that completed every stage");
+  if (basis_.gripper < 0 || basis_.gripper >= static_cast<int>(basis_.model->grippers.size()))
+    throw std::invalid_argument("no such gripper to drag");
+  const int node = basis_.model->grippers[basis_.gripper].nodes.front();
+  if (!basis_.system->dofs().IsFixed(kDofsPerNode * node))
+    throw std::invalid_argument("gripper '" + gripper() +
+                                "' was released by the run's stages: only a held gripper can be "
+                                "dragged");
+}
+
+const std::string& GripperDrag::gripper() const {
+  return basis_.model->grippers[basis_.gripper].name;
+}
+
+Eigen::VectorXd GripperDrag::HandleRate(const Eigen::Vector3d& motion) const {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(basis_.model->DofCount());
+  for (int node : basis_.model->grippers[basis_.gripper].nodes)
+    v.segment<3>(kDofsPerNode * node) = motion;
+  return v;
+}
+
+double GripperDrag::Predict(const Eigen::Vector3d& motion, DragFrame& frame) {
+  EquilibriumSystem& system = *basis_.system;
+  const Eigen::VectorXd rate = HandleRate(motion);
+  system.Assemble(basis_.state, /*with_tangent=*/true, &rate);
+  system.Factorize();
+  ++frame.factorizations;
+  Eigen::VectorXd increment =
+      rate +
+      system.dofs().Expand(system.Solve(-system.dofs().Restrict(system.InternalForceRate())));
+  // The gripper goes no further than keeps the layers apart; the rest of
+  // its motion waits for the next frame.
+  const double t = std::min(1.0, system.StepBound(basis_.state, increment));
+  ApplyIncrement(t * increment, basis_.state);
+  return t;
+}
+
+double GripperDrag::Residual(bool fresh, Eigen::VectorXd& residual, DragFrame& frame) {
+  EquilibriumSystem& system = *basis_.system;
+  system.Assemble(basis_.state, fresh);
+  if (fresh) {
+    system.Factorize();
+    ++frame.factorizations;
+  }
+  const Stage hold{.kind = StageKind::kHold};
+  const StageLoading loading(*basis_.model, hold, {}, basis_.weight_factor, basis_.load_factor);
+  const Eigen::VectorXd external = loading.External(1.0, basis_.state);
+  residual = system.Residual(external);
+  return residual.norm() / std::max(system.ForceLevel(external), 1e-300);
+}
+
+double GripperDrag::Correct(DragFrame& frame) {
+  EquilibriumSystem& system = *basis_.system;
+  Eigen::VectorXd residual;
+  double ratio = Residual(/*fresh=*/false, residual, frame);
+  int corrections = 0;
+  auto done = [&] {
+    return !std::isfinite(ratio) || ratio <= settings_.tolerance ||
+           corrections >= settings_.max_corrections ||
+           residual.norm() <= kRoundOffFactor * system.RoundOffLevel(basis_.state);
+  };
+  while (!done()) {
+    Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-residual));
+    if (const double t = system.StepBound(basis_.state, correction); t < 1) correction *= t;
+    ApplyIncrement(correction, basis_.state);
+    ++corrections;
+    ++frame.corrections;
+    const double last = ratio;
+    ratio = Residual(/*fresh=*/false, residual, frame);
+      // Slow: the tangent has gone stale. Assemble it here, factorise, go on.
+    if (!done() && ratio > settings_.contraction * last)
+      ratio = Residual(/*fresh=*/true, residual, frame);
+  }
+  return ratio;
+}
+
+DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
+  const auto start = Clock::now();
+  DragFrame frame;
+  frame.frame = ++frames_;
+  const ShellState before = basis_.state;
+  Eigen::Vector3d motion = offset - offset_;
+  for (int attempt = 0;; ++attempt) {
+    const double reached = Predict(motion, frame);
+    frame.residual_ratio = Correct(frame);
+    if (IsFinite(basis_.state) && frame.residual_ratio <= settings_.worst_ratio) {
+      offset_ += reached * motion;
+      break;
+    }
+    // Too far for the frame's corrections: the gripper lags behind the
+    // handle by half the motion, and the next frame catches up.
+    basis_.state = before;
+    motion /= 2;
+    if (attempt == settings_.max_halvings) {
+      Eigen::VectorXd residual;
+      frame.residual_ratio = Residual(/*fresh=*/true, residual, frame);
+      break;
+    }
+  }
+  if (basis_.contact) basis_.contact->Commit(basis_.state);
+  frame.offset = offset_;
+  frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return frame;
+}
+
+Scene DraggedScene(const Scene& scene, const std::string& gripper, const Eigen::Vector3d& by) {
+  Scene dragged = scene;
+  const std::string name = DragStageName(gripper);
+  if (!dragged.stages.empty()) {
+    Stage& last = dragged.stages.back();
+    if (last.name == name && last.kind == StageKind::kMove && last.release.empty() &&
+        last.moves.size() == 1 && last.moves[0].gripper == gripper)
+      if (auto* line = std::get_if<LinePath>(&last.moves[0].path)) {
+        for (int k = 0; k < 3; ++k) line->by[k] += by[k];
+        return dragged;
+      }
+  }
+  Stage stage;
+  stage.name = name;
+  stage.kind = StageKind::kMove;
+  Move move;
+  move.gripper = gripper;
+  move.path = LinePath{{by.x(), by.y(), by.z()}};
+  stage.moves.push_back(move);
+  dragged.stages.push_back(stage);
+  return dragged;
+}
+
+}  // namespace drape

@@ -1,0 +1,112 @@
+// A gripper dragged by hand after a run: the fabric re-equilibrates
+// quasi-statically, frame by frame, from the run's last equilibrium — a
+// preview of where the part goes, fast enough to follow a mouse.
+//
+// Each frame predicts the fabric's motion from the handle's: the linear
+// response K_ff Δq_f = −K_fp Δu_p to the gripper's nodes moving by Δu_p, on
+// the tangent at the frame's start (assembled and factorised once). Moving
+// the held nodes alone would kink the elements next to them, a state Newton
+// recovers from slowly if at all. Then a few Newton corrections on that kept
+// factorisation (modified Newton); the tangent is assembled and factorised
+// again only when a correction reduces the residual by less than
+// `DragSettings::contraction`. A frame whose corrections leave more than
+// `worst_ratio` is retried with half the motion: the gripper lags behind the
+// handle and catches up in the next frames.
+//
+// A frame is not a converged step: it reports its residual ratio, and a
+// release solves the edited scene from the start (`DraggedScene`).
+//
+//   ShellSolver solver(scene, options);
+//   solver.Solve({});
+//   GripperDrag drag(solver.BasisForDrag("corner"), DragSettings{});
+//   for (int f = 1; f <= 40; ++f) drag.MoveTo(f / 40.0 * by);
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+
+#include "core/model/scene.h"
+#include "core/solve/equilibrium_system.h"
+#include "core/solve/node_contact.h"
+#include "core/solve/shell_model.h"
+#include "core/solve/shell_state.h"
+
+namespace drape {
+
+// What a drag goes on from: the run's last equilibrium and the system that
+// holds it (ShellSolver::DragBasis). The model, system and contact belong to
+// the solver, which must outlive the drag.
+struct DragBasis {
+  const ShellModel* model = nullptr;
+  EquilibriumSystem* system = nullptr;  // on the last stage's DOFs
+  NodeContact* contact = nullptr;       // null without obstacles
+  ShellState state;                     // the last converged state
+  int gripper = -1;                     // in model->grippers
+  double weight_factor = 0;             // reached by the run's stages
+  double load_factor = 0;
+};
+
+struct DragSettings {
+  // A frame stops correcting at ‖R‖ ≤ tolerance × the force level (loads
+  // and reactions), or after `max_corrections` linear solves.
+  double tolerance = 1e-5;
+  int max_corrections = 4;
+  // A correction that leaves more than this fraction of the residual makes
+  // the next one use a freshly factorised tangent. Newton on a current
+  // tangent contracts quadratically; a stale one linearly at best.
+  double contraction = 0.25;
+  // A frame ending above this residual ratio is retried with half the
+  // motion, at most `max_halvings` times (then it keeps the last state).
+  double worst_ratio = 1e-2;
+  int max_halvings = 4;
+};
+
+struct DragFrame {
+  int frame = 0;                                     // 1, 2, … since the drag began
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  // of the gripper from the start [m]
+  double seconds = 0;                                // the frame's own wall time
+  double residual_ratio = 0;                         // ‖R‖ / force level at its end
+  int corrections = 0;                               // linear solves
+  int factorizations = 0;
+};
+
+class GripperDrag {
+ public:
+  // Throws std::invalid_argument when the basis holds no system (the run
+  // did not complete) or the gripper is not held.
+  GripperDrag(DragBasis basis, const DragSettings& settings);
+
+  // Moves the gripper to `offset` from where the run left it and brings the
+  // fabric towards equilibrium there.
+  DragFrame MoveTo(const Eigen::Vector3d& offset);
+
+  const ShellState& state() const { return basis_.state; }
+  const Eigen::Vector3d& offset() const { return offset_; }
+  const std::string& gripper() const;
+
+ private:
+  // The prescribed DOFs' change for the gripper moving by `motion` (full).
+  Eigen::VectorXd HandleRate(const Eigen::Vector3d& motion) const;
+  // Moves the gripper and the fabric's linear response to it (factorising
+  // the tangent at the state); returns the fraction of `motion` taken.
+  double Predict(const Eigen::Vector3d& motion, DragFrame& frame);
+  // Assembles at the state (with the tangent, factorised, when `fresh`) and
+  // returns ‖R‖ / force level; `residual` gets R over the free DOFs.
+  double Residual(bool fresh, Eigen::VectorXd& residual, DragFrame& frame);
+  // Newton corrections on the kept factorisation; returns the last ratio.
+  double Correct(DragFrame& frame);
+
+  DragBasis basis_;
+  DragSettings settings_;
+  Eigen::Vector3d offset_ = Eigen::Vector3d::Zero();
+  int frames_ = 0;
+};
+
+// The scene a drag leaves: `scene` with the gripper carried by `by` after
+// its stages — the last stage's line extended when that stage is a drag of
+// the same gripper ("drag <gripper>", one line move), else a new such stage.
+// Solving it from the start is the release's full solve.
+Scene DraggedScene(const Scene& scene, const std::string& gripper, const Eigen::Vector3d& by);
+
+}  // namespace drape

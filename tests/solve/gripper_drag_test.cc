@@ -1,0 +1,165 @@
+// GripperDrag: the live drag's frames (core/solve/gripper_drag.h), and the
+// scene a drag leaves.
+#include "core/solve/gripper_drag.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/io/scene_reader.h"
+#include "core/solve/shell_solver.h"
+#include "support/strip_scene.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+Scene CornerLift() {
+  return ReadScene((test::SourceDir() / "tests" / "data" / "corner-lift-20x20.json").string());
+}
+
+double LargestDistance(const ShellState& a, const ShellState& b) {
+  return (a.positions - b.positions).rowwise().norm().maxCoeff();
+}
+
+// Frames at the same offset until the residual meets `tolerance` or stops
+// falling (its round-off floor).
+DragFrame Settle(GripperDrag& drag, double tolerance) {
+  DragFrame frame = drag.MoveTo(drag.offset());
+  for (int k = 0; k < 20 && frame.residual_ratio > tolerance; ++k) {
+    const DragFrame next = drag.MoveTo(drag.offset());
+    if (next.residual_ratio >= 0.5 * frame.residual_ratio) return next;
+    frame = next;
+  }
+  return frame;
+}
+
+TEST(GripperDrag, FramesFollowTheHandleNearEquilibrium) {
+  const Scene scene = CornerLift();
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  ASSERT_TRUE(solver.Solve({}).IsComplete());
+  const ShellState start = solver.state();
+  GripperDrag drag(solver.BasisForDrag("corner"), DragSettings{});
+  const Eigen::Vector3d by(0, 0, 0.05);
+  const int corner = solver.model().grippers[0].nodes.front();
+  for (int f = 1; f <= 40; ++f) {
+    const DragFrame frame = drag.MoveTo(by * f / 40.0);
+    EXPECT_EQ(frame.frame, f);
+    ASSERT_TRUE(std::isfinite(frame.residual_ratio)) << "frame " << f;
+    // The bound a frame is held to (DragSettings::worst_ratio).
+    EXPECT_LE(frame.residual_ratio, 1e-2) << "frame " << f;
+    EXPECT_GE(frame.factorizations, 1);
+    // Where the gripper is, the corner node is.
+    EXPECT_NEAR((drag.state().positions.row(corner) - start.positions.row(corner)).norm(),
+                frame.offset.norm(),
+                1e-12);
+  }
+  EXPECT_NEAR((drag.offset() - by).norm(), 0, 1e-15) << "the gripper caught up with the handle";
+}
+
+TEST(GripperDrag, ASettledDragIsTheDraggedSceneSolvedFromTheStart) {
+  // Two ways to the same equilibrium: frames from the run's end, and the
+  // continuation of the dragged scene from the flat sheet.
+  const Scene scene = CornerLift();
+  const SolverOptions options = SolverOptions::FromScene(scene.solver);
+  ShellSolver solver(scene, options);
+  ASSERT_TRUE(solver.Solve({}).IsComplete());
+  DragSettings settings;
+  settings.tolerance = options.tolerance;
+  GripperDrag drag(solver.BasisForDrag("corner"), settings);
+  const Eigen::Vector3d by(0, 0, 0.03);
+  for (int f = 1; f <= 20; ++f) drag.MoveTo(by * f / 20.0);
+  const DragFrame settled = Settle(drag, options.tolerance);
+  std::printf("settled at %.3g\n", settled.residual_ratio);
+
+  const Scene dragged = DraggedScene(scene, "corner", by);
+  ShellSolver plain(dragged, options);
+  const SolveSummary summary = plain.Solve({});
+  ASSERT_TRUE(summary.IsComplete());
+  std::printf("%s\n", summary.FullReport().c_str());
+  // 1e-6 of the part's size (20 cm).
+  std::printf("distance %.3g\n", LargestDistance(drag.state(), plain.state()));
+  EXPECT_LT(LargestDistance(drag.state(), plain.state()), 1e-6 * 0.2);
+}
+
+TEST(GripperDrag, ASmallLiftBendsAStripAsAProppedCantilever) {
+  // A weightless strip clamped at x = 0, its tip held by a pin lifted by δ:
+  // w(x) = δ x² (3L − x) / (2L³), so w(L/2) = 5δ/16 (beam theory, ν = 0).
+  // δ ≪ h keeps the membrane's stretching (∝ (δ/h)²) below 1e-4 of it.
+  test::StripSpec spec;
+  Scene scene = test::CantileverStrip(spec);
+  scene.grippers.push_back({"tip", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kPosition});
+  scene.stages.push_back(Stage{.name = "rest", .kind = StageKind::kHold});
+  scene.solver.tolerance = 1e-10;
+  const SolverOptions options = SolverOptions::FromScene(scene.solver);
+  ShellSolver solver(scene, options);
+  ASSERT_TRUE(solver.Solve({}).IsComplete());
+  DragSettings settings;
+  settings.tolerance = 1e-10;
+  GripperDrag drag(solver.BasisForDrag("tip"), settings);
+  const double delta = 2e-6;
+  for (int f = 1; f <= 10; ++f) drag.MoveTo(Eigen::Vector3d(0, 0, delta * f / 10));
+  Settle(drag, 1e-10);
+  double w = 0;
+  int count = 0;
+  for (int i = 0; i < drag.state().NodeCount(); ++i)
+    if (std::abs(solver.model().mesh.positions(i, 0) - spec.length / 2) < 1e-9) {
+      w += drag.state().positions(i, 2);
+      ++count;
+    }
+  ASSERT_EQ(count, 2);
+  EXPECT_NEAR(w / count / delta, 5.0 / 16.0, 1e-3);
+}
+
+TEST(GripperDrag, TheDraggedSceneExtendsItsOwnDragStage) {
+  const Scene scene = CornerLift();
+  const Scene once = DraggedScene(scene, "corner", {0, 0, 0.01});
+  ASSERT_EQ(once.stages.size(), scene.stages.size() + 1);
+  EXPECT_EQ(once.stages.back().name, "drag corner");
+  EXPECT_EQ(once.stages.back().kind, StageKind::kMove);
+  const Scene twice = DraggedScene(once, "corner", {0.02, 0, -0.005});
+  ASSERT_EQ(twice.stages.size(), once.stages.size()) << "a second drag extends the first";
+  const auto& line = std::get<LinePath>(twice.stages.back().moves.at(0).path);
+  EXPECT_DOUBLE_EQ(line.by[0], 0.02);
+  EXPECT_DOUBLE_EQ(line.by[1], 0);
+  EXPECT_DOUBLE_EQ(line.by[2], 0.005);
+}
+
+TEST(GripperDrag, SaysWhatCannotBeDragged) {
+  const Scene scene = CornerLift();
+  ShellSolver before(scene, SolverOptions::FromScene(scene.solver));
+  try {
+    before.BasisForDrag("corner");
+    ADD_FAILURE() << "a run not yet solved has no end state";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("did not complete"), std::string::npos) << e.what();
+  }
+  ASSERT_TRUE(before.Solve({}).IsComplete());
+  try {
+    before.BasisForDrag("hand");
+    ADD_FAILURE() << "no gripper 'hand'";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("has no gripper 'hand' (it has 'corner')"),
+              std::string::npos)
+        << e.what();
+  }
+  test::StripSpec spec;
+  Scene released = test::HeavyStrip(spec, 1.0, 0.1);
+  released.grippers.push_back(
+      {"corner", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kPosition});
+  released.stages.back().release = {"corner"};
+  ShellSolver solver(released, SolverOptions::FromScene(released.solver));
+  const SolveSummary summary = solver.Solve({});
+  ASSERT_TRUE(summary.IsComplete()) << summary.message;
+  try {
+    solver.BasisForDrag("corner");
+    ADD_FAILURE() << "a released gripper holds nothing";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("released"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace drape
