@@ -10,13 +10,16 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "app/commands.h"
 #include "app/render_program.h"
+#include "core/model/unit_system.h"
 #include "core/solve/element_fields.h"
 #ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
@@ -24,6 +27,7 @@
 #include "core/model/scene_error.h"
 #include "ui/render/animation.h"
 #include "ui/render/display.h"
+#include "ui/render/field_units.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/render/reaction_chart.h"
 #endif
@@ -39,6 +43,7 @@ struct ViewArgs {
   std::string field;
   std::string colour_map = "viridis";
   std::string camera = "iso";
+  std::string units;  // empty: the scene's own
   std::vector<double> position, focal_point, view_up;
   bool edges = false, thickness = false, no_floor = false, no_paths = false, no_overlay = false;
 
@@ -52,6 +57,12 @@ struct ViewArgs {
                     "Colours of --field: viridis (perceptually uniform) or rainbow")
         ->check(CLI::IsMember({"viridis", "rainbow"}))
         ->capture_default_str();
+    cmd->add_option("--units",
+                    units,
+                    "Units of --field's colour bar: si, textile (cm, gf, 1/cm) or imperial (in, "
+                    "oz, 1/in); default the units the scene is written in (SI for a result "
+                    "folder without its scene.json)")
+        ->check(CLI::IsMember({"si", "textile", "imperial"}));
     cmd->add_option("--camera", camera, "View: iso, front, top or side")->capture_default_str();
     cmd->add_option("--camera-position", position, "Explicit camera position x,y,z [m]")
         ->expected(3)
@@ -70,8 +81,24 @@ struct ViewArgs {
   }
 
 #ifdef DRAPE_WITH_RENDER
-  RenderOptions Options() const {
+  // A scene file's units as written; a result folder keeps only SI numbers
+  // (scene_resolved), so its own scene.json when there is one, else SI.
+  static UnitSystem ScenesOwnUnits(const fs::path& input) {
+    std::error_code ec;
+    const bool result = fs::is_directory(input, ec) || input.filename() == "result.json";
+    const fs::path scene = !result                       ? input
+                           : fs::is_directory(input, ec) ? input / "scene.json"
+                                                         : input.parent_path() / "scene.json";
+    std::ifstream in(scene);
+    if (!in) return UnitSystem::kSI;
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    return GuessUnitSystem(text);
+  }
+
+  // `input`: the scene or result drawn, whose own units are the default.
+  RenderOptions Options(const fs::path& input) const {
     RenderOptions o;
+    o.units = units.empty() ? ScenesOwnUnits(input) : *UnitSystemNamed(units);
     std::tie(o.width, o.height) = ParseSize(size);
     if (!field.empty()) {
       const auto f = FindField(field);
@@ -156,6 +183,15 @@ int Guarded(const char* command, Body body) {
 
 // ---- render ------------------------------------------------------------------
 
+// "curvature [1/cm]: 0 to 0.5235": what the colour bar spans, in its units.
+std::string ColourBarSummary(const RunInput& run, const Frame& frame, const RenderOptions& o) {
+  const std::array<double, 2> range =
+      FieldRange(*o.field, run.model, {frame.state}, frame.contact_pressure);
+  const DisplayUnit unit = UnitFor(FieldMeasure(*o.field), o.units);
+  return FieldTitle(*o.field, o.units) + ": " + FormatNumber(range[0], unit) + " to " +
+         FormatNumber(range[1], unit);
+}
+
 // --plot reactions: |F| of each gripper and support against the step, the
 // stages marked, from result.json alone (no model is built).
 int RunReactionPlot(const RenderArgs& args) {
@@ -219,12 +255,14 @@ int RunReactionPlot(const RenderArgs& args) {
 int RunRender(const RenderArgs& args) {
   return Guarded("render", [&] {
     if (args.plot == "reactions") return RunReactionPlot(args);
-    const RenderOptions options = args.view.Options();
+    const RenderOptions options = args.view.Options(args.input);
     const RunInput run = ReadRunInput(args.input);
     const size_t i = StepIndex(run, args.step);
     FrameRenderer renderer(run.scene, run.model, options, RunBounds(run.scene, Pointers(run)));
-    renderer.Show(FrameOf(run, i));
+    const Frame frame = FrameOf(run, i);
+    renderer.Show(frame);
     renderer.WritePng(args.output);
+    if (options.field) std::cerr << "  " << ColourBarSummary(run, frame, options) << "\n";
     return 0;
   });
 }
@@ -239,7 +277,7 @@ void OnInterrupt(int) {
 int RunAnimate(const AnimateArgs& args) {
   return Guarded("animate", [&]() -> int {
     AnimationOptions options;
-    options.view = args.view.Options();
+    options.view = args.view.Options(args.input);
     options.fps = args.fps;
     options.duration = args.duration;
     const RunInput run = ReadRunInput(args.input);
@@ -339,6 +377,7 @@ void AddRenderCommands(CLI::App& app, CommandRunner& runner) {
   // would be ignored, so they are refused.
   for (const char* name : {"--step",
                            "--field",
+                           "--units",
                            "--colour-map",
                            "--camera",
                            "--camera-position",

@@ -1,4 +1,5 @@
-// The workbench while the solver streams a 100 × 100 drape (issue 9): how
+// The workbench while the solver streams a 100 × 100 drape (issue 9), and
+// instant previews (issue 20, BM_Preview below). While streaming: how
 // late the GUI thread's event loop answers (a 10 ms timer's lateness:
 // target < 100 ms) and how many frames per second the viewport draws when
 // redrawn continuously (target ≥ 30), 10 s of the run. Needs a display:
@@ -7,6 +8,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QTimer>
 
 #include <algorithm>
@@ -15,8 +17,11 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "core/io/scene_reader.h"
+#include "core/solve/shell_solver.h"
 #include "ui/render/display.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/preview_controller.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -97,6 +102,66 @@ void BM_WorkbenchDuringRun(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_WorkbenchDuringRun)->Arg(100)->Arg(20)->Iterations(1)->Unit(benchmark::kSecond);
+
+// Instant previews (issue 20): from PreviewController::request to the
+// first previewStep on the GUI thread (the first ghost; target < 0.5 s)
+// and to previewFinished, on the strip fold and the 20 × 20 diagonal fold.
+// Where the first ghost's time goes: building the draft's solver (model
+// and checks, measured apart on the same scene) and the first step's own
+// time in the solve (StepState::elapsed_s); the rest is the two thread hops.
+// The reported time is the first step's (manual time); take the median:
+//   xvfb-run -a build/bench/workbench_benchmark --benchmark_filter=Preview
+const char* const kPreviewScenes[] = {"strip-fold.json", "diagonal-fold.json"};
+
+void BM_Preview(benchmark::State& bench) {
+  App();
+  const std::string name = kPreviewScenes[bench.range(0)];
+  const Scene scene = ReadScene(std::string(DRAPE_SOURCE_DIR) + "/resources/scenes/" + name);
+  bench.SetLabel(name);
+  const Scene draft = PreviewController::DraftOf(scene);
+  for (auto _ : bench) {
+    QElapsedTimer build;
+    build.start();
+    const ShellSolver solver(draft, SolverOptions::FromScene(draft.solver));
+    const double build_ms = build.nsecsElapsed() / 1e6;
+
+    PreviewController previews;
+    QEventLoop loop;
+    QElapsedTimer clock;
+    double first_ms = -1, first_in_solve_ms = 0, finished_ms = 0;
+    int steps = 0;
+    QObject::connect(
+        &previews,
+        &PreviewController::previewStep,
+        [&](int, std::shared_ptr<const ShellModel>, std::shared_ptr<const StepState> s) {
+          if (steps++ == 0) {
+            first_ms = clock.nsecsElapsed() / 1e6;
+            first_in_solve_ms = 1e3 * s->elapsed_s;
+          }
+        });
+    QObject::connect(&previews, &PreviewController::previewFinished, [&] {
+      finished_ms = clock.nsecsElapsed() / 1e6;
+      loop.quit();
+    });
+    QObject::connect(&previews, &PreviewController::previewFailed, [&] { loop.quit(); });
+    clock.start();
+    previews.request(scene);
+    loop.exec();
+    bench.SetIterationTime(first_ms / 1e3);
+    bench.counters["first_step_ms"] = first_ms;
+    bench.counters["finished_ms"] = finished_ms;
+    bench.counters["solver_build_ms"] = build_ms;
+    bench.counters["first_step_in_solve_ms"] = first_in_solve_ms;
+    bench.counters["draft_steps"] = steps;
+    bench.counters["draft_nodes"] = solver.model().NodeCount();
+  }
+}
+BENCHMARK(BM_Preview)
+    ->DenseRange(0, 1)
+    ->Iterations(1)
+    ->Repetitions(7)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace drape

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -84,6 +85,41 @@ TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
                           Out("scene.png") + " --step 0 --size 200x100");
   ASSERT_EQ(s.exit_code, 0) << s.output;
   EXPECT_EQ(PngSize(dir_ / "scene.png"), std::make_pair(200u, 100u));
+}
+
+// The top of the colour bar `drape render` reports ("curvature [1/cm]: 0 to
+// 0.5235"), after the title given; NaN when the line is missing.
+double BarTop(const std::string& output, const std::string& title) {
+  const auto at = output.find(title + ": ");
+  if (at == std::string::npos) return NAN;
+  const auto to = output.find(" to ", at);
+  return to == std::string::npos ? NAN : std::stod(output.substr(to + 4));
+}
+
+// --units: the colour bar's title names the unit and its numbers are the
+// SI ones over the unit's factor (1 cm = 0.01 m, 1 in = 0.0254 m); without
+// it, a scene's own units (the strip fold is written in cm) and SI for a
+// result folder that has no scene.json.
+TEST_F(RenderCli, UnitsNameAndScaleTheColourBar) {
+  auto render = [&](const std::string& input, const std::string& more) {
+    const auto r = RunDrape("render " + input + " -o " + Out("units.png") +
+                            " --size 400x300 --field curvature" + more);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return r.output;
+  };
+  const double si = BarTop(render(Fold(), " --units si"), "curvature [1/m]");
+  ASSERT_GT(si, 10) << "the fold's curvature, 1/m";
+  EXPECT_NEAR(
+      BarTop(render(Fold(), " --units textile"), "curvature [1/cm]"), si / 100, 5e-4 * si / 100);
+  EXPECT_NEAR(BarTop(render(Fold(), " --units imperial"), "curvature [1/in]"),
+              si * 0.0254,
+              5e-4 * si * 0.0254);
+  EXPECT_NEAR(BarTop(render(Fold(), ""), "curvature [1/m]"), si, 5e-4 * si);
+  const std::string scene = "'" + (test::ScenesDir() / "strip-fold.json").string() + "'";
+  EXPECT_EQ(BarTop(render(scene, ""), "curvature [1/cm]"), 0.0) << "flat: no curvature";
+  const auto r = RunDrape("render " + Fold() + " -o " + Out("x.png") + " --units metric");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--units"), std::string::npos) << r.output;
 }
 
 TEST_F(RenderCli, BadArgumentsAreOneMessageAndExitOne) {

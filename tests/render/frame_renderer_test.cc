@@ -288,5 +288,69 @@ TEST_F(FrameRendererTest, FoldedLayersDrawWithoutZFighting) {
   EXPECT_GT(LowerFaceShowingThroughTheUpperLayer(false), 100);
 }
 
+// A preview's ghost (issue 20) over the flat sheet, from the top: a draft
+// sheet on a coarser mesh (10 × 5), moved half a sheet along x and 1 cm up,
+// so that one half of it lies over the fabric and the other over the
+// background. Where it lies over the fabric the picture changes (the ghost
+// shows) but differs from the ghost over the background (the fabric behind
+// still shows: translucent), and it has no colour field of its own.
+TEST_F(FrameRendererTest, GhostIsTranslucentOverTheFabric) {
+  const Scene scene = FlatSheet();
+  const ShellModel model = BuildShellModel(scene);
+  Scene coarse = scene;
+  coarse.fabric.mesh.elements = std::array<int, 2>{10, 5};
+  const ShellModel draft = BuildShellModel(coarse);
+  ShellState ghost = draft.reference;
+  ghost.positions.col(0).array() += 0.1;
+  ghost.positions.col(2).array() += 0.01;
+  ShellState state = model.reference;
+  RenderOptions options = Bare(640, 480);
+  options.camera.view = "top";
+  options.field = FieldKind::kCurvature;  // the fabric's field must not colour the ghost
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state, &ghost}));
+  Frame frame;
+  frame.state = &state;
+  renderer.Show(frame);
+  const Image before{640, 480, renderer.CaptureRgb()};
+  renderer.SetGhost(draft.mesh, ghost);
+  EXPECT_TRUE(renderer.HasGhost());
+  renderer.Show(frame);
+  const Image after{640, 480, renderer.CaptureRgb()};
+  renderer.WritePng(fs::temp_directory_path() / "drape-render-ghost.png");
+  // Pixel centres: the sheet alone at x = 0.05, ghost over the sheet at
+  // 0.15, ghost alone at 0.25 (all at y = 0).
+  auto at = [&](const Image& image, double x) {
+    const Eigen::Vector2d p = Project(renderer, {x, 0, 0});
+    return image.At(static_cast<int>(p.x()), static_cast<int>(p.y()));
+  };
+  auto distance = [](const std::array<int, 3>& a, const std::array<int, 3>& b) {
+    return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+  };
+  const auto sheet = at(after, 0.05), over = at(after, 0.15), alone = at(after, 0.25);
+  std::printf("sheet %d %d %d, ghost over sheet %d %d %d, ghost alone %d %d %d\n",
+              sheet[0],
+              sheet[1],
+              sheet[2],
+              over[0],
+              over[1],
+              over[2],
+              alone[0],
+              alone[1],
+              alone[2]);
+  EXPECT_EQ(distance(at(before, 0.05), sheet), 0);   // no ghost there
+  EXPECT_GT(distance(at(before, 0.15), over), 60);   // the ghost shows over the fabric
+  EXPECT_GT(distance(at(before, 0.25), alone), 60);  // and over the background
+  EXPECT_GT(distance(over, alone), 60);              // the fabric behind shows through
+  const auto [hue, saturation] = HueSaturation(alone);
+  EXPECT_GT(hue, 190);  // light blue, not a colour of the map
+  EXPECT_LT(hue, 230);
+  EXPECT_LT(saturation, 0.5);
+  renderer.ClearGhost();
+  EXPECT_FALSE(renderer.HasGhost());
+  renderer.Show(frame);
+  const Image cleared{640, 480, renderer.CaptureRgb()};
+  EXPECT_EQ(cleared.rgb, before.rgb);
+}
+
 }  // namespace
 }  // namespace drape

@@ -25,6 +25,7 @@
 #include "core/solve/shell_solver.h"
 #include "support/strip_scene.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/run_controller.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/solver_worker.h"
 #include "widgets/gui_test.h"
@@ -211,8 +212,7 @@ TEST_F(ErrorEstimateWidgets, OutsideTheAsymptoticRangeTheReasonIsShownNotANumber
   window.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
   // As the worker's queued signal would deliver it.
-  ASSERT_TRUE(QMetaObject::invokeMethod(
-      &window, "onErrorEstimated", Qt::DirectConnection, Q_ARG(drape::ErrorEstimate, none)));
+  emit window.runMonitor()->controller()->estimated(none);
   const QLabel* label = window.errorEstimateLabel();
   EXPECT_TRUE(label->isVisible());
   EXPECT_EQ(label->text().toStdString(), Describe(none));

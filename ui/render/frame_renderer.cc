@@ -33,6 +33,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "ui/render/field_units.h"
+#include "ui/render/ghost_surface.h"
 #include "ui/render/scene_actors.h"
 #include "ui/render/window_png.h"
 
@@ -167,6 +169,7 @@ struct FrameRenderer::Impl {
   std::vector<int> support_nodes, gripper_nodes;
   std::vector<Ptr<vtkCaptionActor2D>> probe_labels;
   Ptr<vtkTextActor> overlay = Ptr<vtkTextActor>::New();
+  Ptr<vtkActor> ghost = MakeGhostActor();  // hidden until SetGhost
 
   Impl(const Scene& s,
        const ShellModel& m,
@@ -201,6 +204,7 @@ struct FrameRenderer::Impl {
     AddProbes();
     if (options.floor && !HasPlane()) AddFloor();
     AddOverlay();
+    renderer->AddActor(ghost);
     PlaceCamera();
   }
 
@@ -240,7 +244,7 @@ struct FrameRenderer::Impl {
     }
     if (options.field) {
       bar->SetLookupTable(colours);
-      bar->SetTitle(FieldInfoOf(*options.field).title);
+      bar->SetTitle(FieldTitle(*options.field, options.units).c_str());
       bar->SetNumberOfLabels(5);
       bar->SetLabelFormat("%-#.3g");
       bar->SetMaximumWidthInPixels(110);
@@ -253,6 +257,11 @@ struct FrameRenderer::Impl {
       bar->UnconstrainedFontSizeOn();
       renderer->AddViewProp(bar);
     }
+  }
+
+  // SI per unit of the field's values as shown (options.units).
+  double FieldScale() const {
+    return UnitFor(FieldMeasure(*options.field), options.units).si_factor;
   }
 
   static FieldInfo FieldInfoOf(FieldKind kind) {
@@ -420,6 +429,7 @@ struct FrameRenderer::Impl {
       } else {
         values = EvaluateField(*options.field, model, state);
       }
+      values /= FieldScale();
     }
     for (size_t l = 0; l < fabric_mappers.size(); ++l) {
       const double offset =
@@ -445,7 +455,8 @@ struct FrameRenderer::Impl {
       mapper->SetInputData(normals->GetOutput());
       if (options.field) {
         std::array<double, 2> range =
-            field_range ? *field_range
+            field_range ? std::array<double, 2>{(*field_range)[0] / FieldScale(),
+                                                (*field_range)[1] / FieldScale()}
                         : std::array<double, 2>{values.size() ? values.minCoeff() : 0.0,
                                                 values.size() ? values.maxCoeff() : 1.0};
         if (!(range[1] > range[0]))
@@ -543,6 +554,17 @@ int FrameRenderer::height() const {
 }
 void FrameRenderer::FitCamera() {
   impl_->PlaceCamera();
+}
+
+void FrameRenderer::SetGhost(const Mesh& mesh, const ShellState& state) {
+  PlaceGhost(impl_->ghost, mesh, state);
+  impl_->renderer->ResetCameraClippingRange();  // the ghost may reach beyond the shown state
+}
+void FrameRenderer::ClearGhost() {
+  impl_->ghost->VisibilityOff();
+}
+bool FrameRenderer::HasGhost() const {
+  return impl_->ghost->GetVisibility();
 }
 
 vtkRenderer* FrameRenderer::renderer() {

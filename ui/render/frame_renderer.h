@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 #include "core/solve/element_fields.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/shell_state.h"
@@ -48,6 +49,9 @@ struct RenderOptions {
   int width = 1280, height = 720;
   std::optional<FieldKind> field;  // none: the fabric's own two colours
   ColourMap colour_map = ColourMap::kViridis;
+  // The field's values, its bar's labels and title in this system's unit
+  // ("curvature [1/cm]"); field_range stays SI.
+  UnitSystem units = UnitSystem::kSI;
   bool edges = false;      // mesh lines on the surface
   bool thickness = false;  // both faces, h apart, instead of the midsurface
   bool floor = true;       // a grid under the part (unless a plane obstacle is there)
@@ -101,6 +105,15 @@ class FrameRenderer {
   // The camera placed again as at the start, fitted to the window's present
   // shape (after the window was resized, or the user turned the view).
   void FitCamera();
+
+  // A preview's ghost (issue 20): `state` on its own `mesh` (a draft's,
+  // coarser than the model's), translucent light blue over what Show draws,
+  // until ClearGhost or the next SetGhost; both copied. Renders on the next
+  // Show (or the viewport's paint). Throws std::invalid_argument when the
+  // state's nodes are not the mesh's.
+  void SetGhost(const Mesh& mesh, const ShellState& state);
+  void ClearGhost();
+  bool HasGhost() const;
 
  private:
   struct Impl;

@@ -30,8 +30,8 @@ LoadsPanel::LoadsPanel(SceneDocument* document, QWidget* parent)
   force_->setToolTip("total force x, y, z shared by the nodes; units allowed (N, gf, oz)");
   moment_ = new QLineEdit("0, 0, 0", this);
   moment_->setToolTip("total moment x, y, z; units allowed (N*m, gf*cm)");
-  form->addRow("force [N]", force_);
-  form->addRow("moment [N·m]", moment_);
+  form->addRow("force", force_);  // the values carry their units
+  form->addRow("moment", moment_);
   layout->addLayout(form);
   auto* buttons = new QHBoxLayout;
   auto* add = new QPushButton("Add load", this);
@@ -118,6 +118,11 @@ bool LoadsPanel::removeSelected() {
   return ApplyOrSay(document_, message_, "remove " + name, after);
 }
 
+void LoadsPanel::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  refresh();
+}
+
 void LoadsPanel::refresh() {
   const Scene& s = document_->scene();
   const int row = list_->currentRow();
@@ -125,16 +130,17 @@ void LoadsPanel::refresh() {
     const QSignalBlocker block(list_);
     list_->clear();
     for (const PointLoad& l : s.loads)
-      list_->addItem(QString("%1: (%2) N on %3")
-                         .arg(QString::fromStdString(l.name), ListText(l.force))
-                         .arg(DescribeSelection(l.select)));
+      list_->addItem(
+          QString("%1: (%2) on %3")
+              .arg(QString::fromStdString(l.name), ListText(l.force, Measure::kForce, units_))
+              .arg(DescribeSelection(l.select)));
     if (!s.loads.empty())
       list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.loads.size()) - 1));
   }
   const int i = list_->currentRow();
   if (i >= 0) {
-    force_->setText(ListText(s.loads[i].force));
-    moment_->setText(ListText(s.loads[i].moment));
+    force_->setText(ListText(s.loads[i].force, Measure::kForce, units_));
+    moment_->setText(ListText(s.loads[i].moment, Measure::kMoment, units_));
   }
 }
 

@@ -9,6 +9,8 @@
 #include <array>
 #include <vector>
 
+#include "core/model/unit_system.h"
+
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -41,6 +43,8 @@ class LoadsPanel : public QWidget {
 
  public slots:
   void refresh();
+  // The loads shown in `system`'s units (typing takes any unit).
+  void setUnitSystem(UnitSystem system);
   void setPickedNodes(const std::vector<int>& nodes, const std::vector<std::array<double, 2>>& at);
 
  private:
@@ -52,6 +56,7 @@ class LoadsPanel : public QWidget {
   SelectionRuleEditor* rule_;
   QLineEdit *force_, *moment_;
   QLabel* message_;
+  UnitSystem units_ = UnitSystem::kSI;
 };
 
 }  // namespace drape

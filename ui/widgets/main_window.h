@@ -1,6 +1,9 @@
-// The workbench's main window: a scene, its 3-D view, a run on a worker
-// thread streaming each converged step to the view, and a timeline over the
-// steps. (Editors, plots and export come on top of this.)
+// The workbench's main window: the wiring of its parts. A scene document
+// (DocumentController: open, save, autosave; each change modelled once),
+// its 3-D view and timeline (ViewController), picking (PickingController)
+// and drag handles (HandleController) in the view, a run on a worker thread
+// with its plots (RunMonitor), the editors docked at the left, the menus
+// and toolbar (WorkbenchActions), export (ExportController).
 #pragma once
 
 #include <QMainWindow>
@@ -9,28 +12,25 @@
 #include <optional>
 #include <vector>
 
-#include "core/model/scene.h"
 #include "core/solve/error_estimate.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/document_controller.h"
+#include "ui/widgets/error_estimate_label.h"
 #include "ui/widgets/export_controller.h"
+#include "ui/widgets/handle_controller.h"
 #include "ui/widgets/meta_types.h"
+#include "ui/widgets/picking_controller.h"
+#include "ui/widgets/run_monitor.h"
+#include "ui/widgets/scene_keeper.h"
+#include "ui/widgets/view_controller.h"
 
-class QAction;
 class QCloseEvent;
 class QDockWidget;
-class QMenu;
-class QComboBox;
 class QLabel;
-class QSlider;
-class QTimer;
 
 namespace drape {
-
-class ErrorEstimateLabel;
-class RunController;
 
 class DragHandles;
 class HoldsPanel;
@@ -40,13 +40,14 @@ class ObstaclesPanel;
 class PathHandles;
 class ProbePlot;
 class ProbesPanel;
+class PropertyPanel;
 class ReactionPlot;
 class ResidualPlot;
-class PropertyPanel;
 class RunPlot;
-class StagesPanel;
 class SceneDocument;
+class StagesPanel;
 class VtkViewport;
+class WorkbenchActions;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -55,11 +56,29 @@ class MainWindow : public QMainWindow {
   ~MainWindow() override;
 
   // Loads a scene file; on error shows the message and keeps what was open.
-  bool openScene(const QString& file);
-  VtkViewport* viewport() const { return viewport_; }
+  bool openScene(const QString& file) { return documents_->open(file); }
+  // A new unsaved scene from a template (resources/scenes/*.json).
+  bool newFromTemplate(const QString& file) { return documents_->newFromTemplate(file); }
+  // Saves the scene (to `file`, or where it came from); false with a message.
+  bool saveScene(const QString& file = {}) { return documents_->save(file); }
+  // Autosave: the edited scene is written every minute to autosavePath();
+  // a clean close removes it, so one found at start is a crash's.
+  static QString autosavePath() { return SceneKeeper::AutosavePath(); }
+  bool autosave() { return documents_->autosave(); }
+  // Opens the autosaved scene (its edits become unsaved changes again).
+  bool recoverAutosave() { return documents_->recoverAutosave(); }
+  QStringList recentFiles() const { return documents_->recentFiles(); }
+
+  // The parts.
   SceneDocument* document() const { return document_; }
+  DocumentController* documentController() const { return documents_; }
+  VtkViewport* viewport() const { return viewport_; }
+  ViewController* view() const { return view_; }
+  PickingController* picking() const { return picking_; }
+  HandleController* handles() const { return handles_; }
+  RunMonitor* runMonitor() const { return monitor_; }
+  WorkbenchActions* actions() const { return actions_; }
   PropertyPanel* properties() const { return properties_; }
-  RunPlot* plot() const { return plot_; }
   StagesPanel* stages() const { return stages_; }
   HoldsPanel* supports() const { return supports_; }
   HoldsPanel* grippers() const { return grippers_; }
@@ -67,44 +86,36 @@ class MainWindow : public QMainWindow {
   LoadsPanel* loads() const { return loads_; }
   ProbesPanel* probes() const { return probes_; }
   ModelTree* tree() const { return tree_; }
-  ProbePlot* probePlot() const { return probe_plot_; }
-  ResidualPlot* residualPlot() const { return residual_plot_; }
-  ReactionPlot* reactionPlot() const { return reaction_plot_; }
-  PathHandles* pathHandles() const { return handles_; }
-  DragHandles* obstacleHandles() const { return obstacle_handles_; }
+  RunPlot* plot() const { return monitor_->plot(); }
+  ProbePlot* probePlot() const { return monitor_->probePlot(); }
+  ResidualPlot* residualPlot() const { return monitor_->residualPlot(); }
+  ReactionPlot* reactionPlot() const { return monitor_->reactionPlot(); }
+  PathHandles* pathHandles() const { return handles_->pathHandles(); }
+  DragHandles* obstacleHandles() const { return handles_->obstacleHandles(); }
   // Nodes picked in the viewport (pick mode), in the order picked.
-  const std::vector<int>& pickedNodes() const { return picked_; }
-  // A new unsaved scene from a template (resources/scenes/*.json).
-  bool newFromTemplate(const QString& file);
-  // Saves the scene (to `file`, or where it came from); false with a message.
-  bool saveScene(const QString& file = {});
+  const std::vector<int>& pickedNodes() const { return picking_->picked(); }
 
-  // Autosave: the edited scene is written every minute to autosavePath();
-  // a clean close removes it, so one found at start is a crash's.
-  static QString autosavePath();
-  bool autosave();
-  // Opens the autosaved scene (its edits become unsaved changes again).
-  bool recoverAutosave();
-  QStringList recentFiles() const;
-  int stepCount() const { return static_cast<int>(steps_.size()); }
+  int stepCount() const { return view_->stepCount(); }
   // Step `i` (1-based, as the timeline counts).
-  const StepState& step(int i) const { return *steps_.at(i - 1); }
-  int currentStep() const;
-  bool isRunning() const;
-  bool isPaused() const;
+  const StepState& step(int i) const { return view_->step(i); }
+  int currentStep() const { return view_->currentStep(); }
+  bool isRunning() const { return monitor_ && monitor_->isRunning(); }
+  bool isPaused() const { return monitor_ && monitor_->isPaused(); }
   // The last run's error estimate (solver.error_estimate), shown beside its
   // summary in the status bar: Describe()'s line, the per-probe errors in
   // its tooltip. Empty before the run's estimate came, or without one.
-  const std::optional<ErrorEstimate>& errorEstimate() const;
-  QLabel* errorEstimateLabel() const;
+  const std::optional<ErrorEstimate>& errorEstimate() const {
+    return monitor_->estimateLabel()->estimate();
+  }
+  QLabel* errorEstimateLabel() const { return monitor_->estimateLabel(); }
 
   // The colour field ("" for none, else a name of Fields()).
-  bool setField(const QString& name);
+  bool setField(const QString& name) { return view_->setField(name); }
   // Its colours: "viridis" (the default) or "rainbow".
-  bool setColourMap(const QString& name);
+  bool setColourMap(const QString& name) { return view_->setColourMap(name); }
   // The camera fitted to the run from "iso", "front", "top" or "side" (as
   // `drape render --camera`); also how to get the view back after turning it.
-  bool setCamera(const QString& view);
+  bool setCamera(const QString& view) { return view_->setCamera(view); }
   // The shown step as a PNG of the view's size, drawn by the offscreen
   // renderer (the same builder); false with a message on failure.
   bool exportImage(const QString& file, QString* error = nullptr);
@@ -118,89 +129,49 @@ class MainWindow : public QMainWindow {
 
  public slots:
   void run();
-  void pauseOrResume();
-  void stepOnce();
-  void stop();
-  void showStep(int index);  // 0: the reference state
-  void play();               // through the timeline from the shown step
+  void pauseOrResume() { monitor_->pauseOrResume(); }
+  void stepOnce() { monitor_->stepOnce(); }
+  void stop() {
+    if (monitor_) monitor_->stop();
+  }
+  void showStep(int index) { view_->showStep(index); }  // 0: the reference state
+  void play() { view_->play(); }                        // through the timeline from the shown step
   // The node nearest `point` in the shown state is picked, or unpicked
   // when it was.
-  void pickNear(const Eigen::Vector3d& point);
-  void clearPicked();
+  void pickNear(const Eigen::Vector3d& point) { picking_->pickNear(point); }
+  void clearPicked() { picking_->clear(); }
 
  signals:
   void runFinished(const drape::SolveSummary& summary);
 
- private slots:
-  void onStep(std::shared_ptr<const drape::StepState> step);
-  void onEstimating();
-  void onErrorEstimated(const drape::ErrorEstimate& estimate);
-  void onFinished(const drape::SolveSummary& summary);
-  void onFailed(const QString& message);
-
  private:
-  void buildActions();
-  void rememberRecent(const QString& file);
-  void rebuildRecentMenu();
   void closeEvent(QCloseEvent* event) override;
-  void onDocumentChanged();
-  void rebuildRenderer();
-  void updateControls();
-  void updateHandles();
-  void WarnOfNodeNumbers(const Scene& scene);
-  ExportedRun exportedRun() const;
-  void redrawView();
-  RenderOptions viewportLook() const;
+  void BuildDocks();
+  void OnAccepted(bool renumbered);
+  void OnFinished(const SolveSummary& summary);
+  void UpdateControls();
   // A written (or cancelled) export in the status bar; otherwise its reason in `error`.
-  bool report(const ExportOutcome& outcome, QString* error);
-  void updateMarkers();
-  void PublishPicked();
-  void onPathDragged(const Path& path);
-  void onObstacleDragged();
-  void ApplyAfterDrag(const QString& what, const Scene& after);
-  void showEditor(int part, int index, int move);
-  QDockWidget* addPanel(const QString& title, QWidget* panel, QDockWidget* tab_with);
+  bool Report(const ExportOutcome& outcome, QString* error);
+  void ShowEditor(int part, int index, int move);
+  QDockWidget* AddPanel(const QString& title, QWidget* panel, QDockWidget* tab_with);
+  QDockWidget* AddPlot(const QString& title, QWidget* plot, QDockWidget* tab_with);
 
-  Scene scene_;
-  std::unique_ptr<ShellModel> model_;
-  std::unique_ptr<FrameRenderer> renderer_;
-  std::vector<std::shared_ptr<const StepState>> steps_;
-  VtkViewport* viewport_ = nullptr;
   SceneDocument* document_ = nullptr;
+  DocumentController* documents_ = nullptr;
+  VtkViewport* viewport_ = nullptr;
+  ViewController* view_ = nullptr;
+  PickingController* picking_ = nullptr;
+  HandleController* handles_ = nullptr;
+  RunMonitor* monitor_ = nullptr;
+  WorkbenchActions* actions_ = nullptr;
   PropertyPanel* properties_ = nullptr;
-  RunPlot* plot_ = nullptr;
   StagesPanel* stages_ = nullptr;
   HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;
   ObstaclesPanel* obstacles_ = nullptr;
   LoadsPanel* loads_ = nullptr;
   ProbesPanel* probes_ = nullptr;
   ModelTree* tree_ = nullptr;
-  ProbePlot* probe_plot_ = nullptr;
-  ResidualPlot* residual_plot_ = nullptr;
-  ReactionPlot* reaction_plot_ = nullptr;
-  std::vector<QDockWidget*> editor_docks_;               // by ModelTree::Part
-  bool stages_shown_ = false, obstacles_shown_ = false;  // their docks' tabs are up
-  PathHandles* handles_ = nullptr;
-  DragHandles* obstacle_handles_ = nullptr;
-  int handle_obstacle_ = -1;                  // the obstacle with a handle
-  int handle_stage_ = -1, handle_move_ = -1;  // the move whose path has handles
-  std::vector<int> picked_;
-  QSlider* timeline_ = nullptr;
-  QComboBox* field_ = nullptr;
-  QComboBox* colour_map_ = nullptr;
-  QTimer* player_ = nullptr;
-  QTimer* autosave_timer_ = nullptr;
-  QMenu* recent_menu_ = nullptr;
-  RenderOptions view_;
-  QLabel* step_label_ = nullptr;
-  ErrorEstimateLabel* estimate_label_ = nullptr;  // in the status bar, beside the run's summary
-  bool estimating_ = false;  // the run is done; its error estimate is under way
-  QAction *undo_ = nullptr, *redo_ = nullptr, *material_ = nullptr, *pick_ = nullptr;
-  QAction *open_ = nullptr, *run_ = nullptr, *pause_ = nullptr, *step_ = nullptr, *stop_ = nullptr;
-  RunController* runs_ = nullptr;  // the solver's thread while a run goes on
-  bool follow_ = true;
-  bool draw_pending_ = false;    // the newest step is to be drawn
-  bool camera_touched_ = false;  // since the renderer was made
+  std::vector<QDockWidget*> editor_docks_;  // by ModelTree::Part
 };
 
 }  // namespace drape

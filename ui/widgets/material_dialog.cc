@@ -113,8 +113,62 @@ QString MaterialDialog::message() const {
   return message_->text();
 }
 
+void MaterialDialog::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  if (plot_) Draw();
+}
+
+// The last preview's points and law over the data's range, in units_.
+void MaterialDialog::Draw() {
+  chart_->removeAllSeries();
+  for (QAbstractAxis* axis : chart_->axes()) chart_->removeAxis(axis);
+  const DisplayUnit k_unit = UnitFor(Measure::kCurvature, units_);
+  const DisplayUnit m_unit = UnitFor(Measure::kMomentPerWidth, units_);
+  auto* measured = new QScatterSeries;
+  measured->setName("measured");
+  measured->setMarkerSize(6);
+  for (size_t i = 0; i < plot_->curvature.size(); ++i)
+    measured->append(plot_->curvature[i] / k_unit.si_factor, plot_->moment[i] / m_unit.si_factor);
+  auto* fitted = new QLineSeries;
+  fitted->setName(plot_->law_name);
+  const auto [lo, hi] = std::minmax_element(plot_->curvature.begin(), plot_->curvature.end());
+  for (int i = 0; i <= 200; ++i) {
+    const double k = *lo + (*hi - *lo) * i / 200.0;  // [1/m]
+    const double m = plot_->law->Moment(k / kPerCm) * kGfCmPerCm;
+    fitted->append(k / k_unit.si_factor, m / m_unit.si_factor);
+  }
+  chart_->addSeries(measured);
+  chart_->addSeries(fitted);
+  auto* x_axis = new QValueAxis;
+  x_axis->setTitleText(QString("curvature K [%1]").arg(QString::fromStdString(k_unit.label)));
+  auto* y_axis = new QValueAxis;
+  y_axis->setTitleText(QString("moment M [%1]").arg(QString::fromStdString(m_unit.label)));
+  chart_->addAxis(x_axis, Qt::AlignBottom);
+  chart_->addAxis(y_axis, Qt::AlignLeft);
+  for (QAbstractSeries* series : chart_->series()) {
+    series->attachAxis(x_axis);
+    series->attachAxis(y_axis);
+  }
+  message_->setStyleSheet("");
+  message_->setText(Summary());
+}
+
+QString MaterialDialog::Summary() const {
+  const auto [lo, hi] = std::minmax_element(plot_->curvature.begin(), plot_->curvature.end());
+  QString text = QString("%1\n%2 points, K from %3 to %4")
+                     .arg(plot_->read)
+                     .arg(plot_->curvature.size())
+                     .arg(QString::fromStdString(FormatQuantity(*lo, Measure::kCurvature, units_)),
+                          QString::fromStdString(FormatQuantity(*hi, Measure::kCurvature, units_)));
+  if (plot_->rms_kes >= 0)
+    text += ", RMS error " + QString::fromStdString(FormatQuantity(
+                                 plot_->rms_kes * kGfCmPerCm, Measure::kMomentPerWidth, units_, 3));
+  return text + plot_->warnings;
+}
+
 bool MaterialDialog::preview() {
   previewed_.reset();
+  plot_.reset();
   measured_points_ = 0;
   chart_->removeAllSeries();
   for (QAbstractAxis* axis : chart_->axes()) chart_->removeAxis(axis);
@@ -155,44 +209,19 @@ bool MaterialDialog::preview() {
       c.moment_column = options.moment_column;
       previewed_ = c;
     }
-    // The measured points and the law over the data's range, in KES units.
-    auto* measured = new QScatterSeries;
-    measured->setName("measured");
-    measured->setMarkerSize(6);
-    auto* fitted = new QLineSeries;
-    fitted->setName(law_->currentData().toString() == "polynomial" ? "polynomial fit"
-                                                                   : "curve law");
-    const double lo = *std::min_element(k.begin(), k.end()),
-                 hi = *std::max_element(k.begin(), k.end());
-    for (size_t i = 0; i < k.size(); ++i) measured->append(k[i], m[i]);
-    for (int i = 0; i <= 200; ++i) {
-      const double x = lo + (hi - lo) * i / 200.0;
-      fitted->append(x, law->Moment(x));
-    }
-    chart_->addSeries(measured);
-    chart_->addSeries(fitted);
-    auto* x_axis = new QValueAxis;
-    x_axis->setTitleText("curvature K [1/cm]");
-    auto* y_axis = new QValueAxis;
-    y_axis->setTitleText("moment M [gf·cm/cm]");
-    chart_->addAxis(x_axis, Qt::AlignBottom);
-    chart_->addAxis(y_axis, Qt::AlignLeft);
-    for (QAbstractSeries* s : chart_->series()) {
-      s->attachAxis(x_axis);
-      s->attachAxis(y_axis);
-    }
+    Plot plot;
+    plot.curvature = curve.curvature;
+    plot.moment = curve.moment;
+    plot.law = std::move(law);
+    plot.law_name = law_->currentData().toString() == "polynomial" ? "polynomial fit" : "curve law";
+    plot.read = QString("read %1 and %2")
+                    .arg(QString::fromStdString(curve.curvature_read),
+                         QString::fromStdString(curve.moment_read));
+    plot.rms_kes = law_->currentData().toString() == "polynomial" ? rms : -1;
+    for (const auto& w : curve.warnings) plot.warnings += "\nwarning: " + QString::fromStdString(w);
+    plot_ = std::move(plot);
     measured_points_ = static_cast<int>(k.size());
-    QString text = QString("read %1 and %2\n%3 points, K from %4 to %5 1/cm")
-                       .arg(QString::fromStdString(curve.curvature_read),
-                            QString::fromStdString(curve.moment_read))
-                       .arg(k.size())
-                       .arg(lo)
-                       .arg(hi);
-    if (law_->currentData().toString() == "polynomial")
-      text += QString(", RMS error %1 gf·cm/cm").arg(rms, 0, 'g', 3);
-    for (const auto& w : curve.warnings) text += "\nwarning: " + QString::fromStdString(w);
-    message_->setStyleSheet("");
-    message_->setText(text);
+    Draw();
     return true;
   } catch (const std::exception& e) {
     message_->setStyleSheet("color: #b00020");

@@ -7,9 +7,12 @@
 
 #include <QDialog>
 
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 
 class QChart;
 class QComboBox;
@@ -18,6 +21,8 @@ class QLineEdit;
 class QSpinBox;
 
 namespace drape {
+
+class MomentCurvatureLaw;
 
 class SceneDocument;
 
@@ -46,6 +51,12 @@ class MaterialDialog : public QDialog {
   // The library material chosen into the scene (one edit).
   bool applyLibrary();
 
+  // The plot's axes and values (and the message's numbers) in `system`;
+  // the data are read and fitted in KES units (1/cm, gf·cm/cm) as before.
+  void setUnitSystem(UnitSystem system);
+  UnitSystem unitSystem() const { return units_; }
+  QChart* chart() const { return chart_; }
+
  private:
   SceneDocument* document_;
   QLineEdit* file_;
@@ -54,8 +65,21 @@ class MaterialDialog : public QDialog {
   QSpinBox* degree_;
   QLabel* message_;
   QChart* chart_;
+  void Draw();
+  QString Summary() const;
+
   std::optional<BendingLaw> previewed_;
   int measured_points_ = 0;
+  UnitSystem units_ = UnitSystem::kSI;
+  // The last preview, for drawing it again in other units: the measured
+  // points [1/m, N·m/m] and the law, which takes and gives KES units.
+  struct Plot {
+    std::vector<double> curvature, moment;
+    std::shared_ptr<const MomentCurvatureLaw> law;
+    QString law_name, read, warnings;
+    double rms_kes = -1;  // gf·cm/cm; < 0 for the curve law
+  };
+  std::optional<Plot> plot_;
 };
 
 }  // namespace drape

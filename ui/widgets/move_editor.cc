@@ -25,22 +25,23 @@ QString KindOf(const Path& path) {
                     path);
 }
 
-QString Describe(const Move& m) {
+QString Describe(const Move& m, UnitSystem units) {
   const QString what = m.gripper.empty() ? "obstacle " + QString::fromStdString(m.obstacle)
                                          : QString::fromStdString(m.gripper);
-  return std::visit(Overloaded{[&](const LinePath& p) {
-                                 return QString("%1: line by (%2) m").arg(what, ListText(p.by));
-                               },
-                               [&](const ArcPath& p) {
-                                 return QString("%1: arc %2° about (%3)")
-                                     .arg(what)
-                                     .arg(p.angle_deg)
-                                     .arg(ListText(p.axis));
-                               },
-                               [&](const KeyframesPath& p) {
-                                 return QString("%1: %2 keyframes").arg(what).arg(p.points.size());
-                               }},
-                    m.path);
+  return std::visit(
+      Overloaded{[&](const LinePath& p) {
+                   return QString("%1: line by (%2)").arg(what, ListText(p.by, units));
+                 },
+                 [&](const ArcPath& p) {
+                   return QString("%1: arc %2° about (%3)")
+                       .arg(what)
+                       .arg(p.angle_deg)
+                       .arg(ListText(p.axis));
+                 },
+                 [&](const KeyframesPath& p) {
+                   return QString("%1: %2 keyframes").arg(what).arg(p.points.size());
+                 }},
+      m.path);
 }
 
 }  // namespace
@@ -183,13 +184,18 @@ void MoveEditor::ShowKind(const QString& kind) {
   auto label = [&](QWidget* field, const QString& text) {
     if (auto* l = qobject_cast<QLabel*>(form_->labelForField(field))) l->setText(text);
   };
-  label(first_, arc ? "centre [m]" : keys ? "points [m]" : "by [m]");
+  label(first_, arc ? "centre" : keys ? "points" : "by");  // the values carry their units
   label(second_, keys ? "interpolation" : "axis");
   label(third_, "angle [deg]");
   form_->setRowVisible(second_, arc || keys);
   form_->setRowVisible(third_, arc);
   first_->setToolTip(keys ? "offsets from the start, \"x, y, z; x, y, z\"; units allowed (5 cm)"
                           : "x, y, z; units allowed (5 cm)");
+}
+
+void MoveEditor::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  refresh();
 }
 
 void MoveEditor::refresh() {
@@ -206,7 +212,7 @@ void MoveEditor::refresh() {
   {
     const QSignalBlocker block(list_);
     list_->clear();
-    for (const Move& m : moves) list_->addItem(Describe(m));
+    for (const Move& m : moves) list_->addItem(Describe(m, units_));
     if (!moves.empty())
       list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(moves.size()) - 1));
   }
@@ -217,15 +223,15 @@ void MoveEditor::refresh() {
     const Path& path = moves[m].path;
     kind_->setCurrentText(KindOf(path));
     ShowKind(KindOf(path));
-    std::visit(Overloaded{[&](const LinePath& p) { first_->setText(ListText(p.by)); },
+    std::visit(Overloaded{[&](const LinePath& p) { first_->setText(ListText(p.by, units_)); },
                           [&](const ArcPath& p) {
-                            first_->setText(ListText(p.center));
+                            first_->setText(ListText(p.center, units_));
                             second_->setText(ListText(p.axis));
                             third_->setText(QString::number(p.angle_deg));
                           },
                           [&](const KeyframesPath& p) {
                             QStringList points;
-                            for (const Vec3& v : p.points) points << ListText(v);
+                            for (const Vec3& v : p.points) points << ListText(v, units_);
                             first_->setText(points.join("; "));
                             second_->setText(ToString(p.interpolation));
                           }},

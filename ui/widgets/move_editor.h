@@ -7,6 +7,8 @@
 
 #include <QWidget>
 
+#include "core/model/unit_system.h"
+
 class QComboBox;
 class QFormLayout;
 class QLabel;
@@ -43,6 +45,8 @@ class MoveEditor : public QWidget {
  public slots:
   void setStage(int stage);
   void refresh();
+  // Paths shown in `system`'s lengths (typing takes any unit).
+  void setUnitSystem(UnitSystem system);
 
  signals:
   // The move shown (-1 when none): its handles go into the viewport.
@@ -60,6 +64,7 @@ class MoveEditor : public QWidget {
   QFormLayout* form_;
   QLineEdit *first_, *second_, *third_;
   QLabel* message_;
+  UnitSystem units_ = UnitSystem::kSI;
   bool refreshing_ = false;
 };
 

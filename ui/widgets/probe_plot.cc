@@ -20,7 +20,7 @@ ProbePlot::ProbePlot(QWidget* parent) : QChartView(parent) {
   steps_->setTitleText("step");
   steps_->setLabelFormat("%d");
   heights_ = new QValueAxis;
-  heights_->setTitleText("z [m]");
+  heights_->setTitleText("z [m]");  // setUnitSystem names another unit
   chart->addAxis(steps_, Qt::AlignBottom);
   chart->addAxis(heights_, Qt::AlignLeft);
   setChart(chart);
@@ -35,8 +35,9 @@ void ProbePlot::clear() {
     delete s;
   }
   series_.clear();
+  si_.clear();
   steps_->setRange(0, 10);
-  heights_->setRange(-0.01, 0.01);
+  heights_->setRange(-0.01 / Unit(), 0.01 / Unit());  // ±1 cm
   low_ = high_ = 0;
   empty_ = true;
 }
@@ -49,17 +50,35 @@ void ProbePlot::add(const StepState& step) {
     s->attachAxis(steps_);
     s->attachAxis(heights_);
     series_.push_back(s);
+    si_.emplace_back();
   }
   for (size_t i = 0; i < step.probes.size(); ++i) {
     const double z = step.probes[i].value.z();
     low_ = empty_ ? z : std::min(low_, z);
     high_ = empty_ ? z : std::max(high_, z);
     empty_ = false;
-    series_[i]->append(step.step, z);
+    si_[i].append(QPointF(step.step, z));
+    series_[i]->append(step.step, z / Unit());
   }
-  const double margin = std::max(1e-3, 0.05 * (high_ - low_));
-  heights_->setRange(low_ - margin, high_ + margin);
+  SetHeightRange();
   steps_->setRange(0, std::max(10, step.step));
+}
+
+void ProbePlot::SetHeightRange() {
+  const double margin = std::max(1e-3, 0.05 * (high_ - low_));  // [m]
+  heights_->setRange((low_ - margin) / Unit(), (high_ + margin) / Unit());
+}
+
+void ProbePlot::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  const DisplayUnit unit = UnitFor(Measure::kLength, system);
+  heights_->setTitleText(QString("z [%1]").arg(QString::fromStdString(unit.label)));
+  for (size_t i = 0; i < series_.size(); ++i) {
+    QList<QPointF> shown = si_[i];
+    for (QPointF& p : shown) p.setY(p.y() / unit.si_factor);
+    series_[i]->replace(shown);
+  }
+  if (!empty_) SetHeightRange();
 }
 
 int ProbePlot::points(int probe) const {
@@ -67,7 +86,7 @@ int ProbePlot::points(int probe) const {
 }
 
 double ProbePlot::lastHeight(int probe) const {
-  return series_.at(static_cast<size_t>(probe))->points().back().y();
+  return si_.at(static_cast<size_t>(probe)).back().y();
 }
 
 ResidualPlot::ResidualPlot(QWidget* parent) : QChartView(parent) {

@@ -7,6 +7,8 @@
 
 #include <vector>
 
+#include "core/model/unit_system.h"
+
 class QLineSeries;
 class QLogValueAxis;
 class QValueAxis;
@@ -24,10 +26,18 @@ class ProbePlot : public QChartView {
   void add(const StepState& step);
   // Points plotted for probe `i` (in the scene's order).
   int points(int probe) const;
-  double lastHeight(int probe) const;
+  double lastHeight(int probe) const;  // [m]
+  // Heights (axis, points, tooltips) in `system`'s length unit from now on.
+  void setUnitSystem(UnitSystem system);
+  QValueAxis* heightAxis() const { return heights_; }
 
  private:
+  void SetHeightRange();
+  double Unit() const { return UnitFor(Measure::kLength, units_).si_factor; }
+
   std::vector<QLineSeries*> series_;
+  std::vector<QList<QPointF>> si_;  // per probe: (step, z [m]), for another unit
+  UnitSystem units_ = UnitSystem::kSI;
   QValueAxis *steps_, *heights_;
   double low_ = 0, high_ = 0;  // the heights plotted so far
   bool empty_ = true;

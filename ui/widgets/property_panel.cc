@@ -15,7 +15,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/model/fabric_mesh.h"
 #include "core/model/overloaded.h"
 #include "core/model/solver_preset.h"
 #include "ui/widgets/edit_feedback.h"
@@ -43,6 +42,27 @@ QuantityField::QuantityField(Dimension dimension,
   connect(edit_, &QLineEdit::editingFinished, this, &QuantityField::Commit);
 }
 
+QuantityField::QuantityField(Measure measure,
+                             const QString& unit_hint,
+                             std::function<QString(double)> check,
+                             QWidget* parent)
+    : QuantityField(DimensionOf(measure), unit_hint, std::move(check), parent) {
+  measure_ = measure;
+}
+
+void QuantityField::setValue(double si, UnitSystem system) {
+  // Another system shows every value anew, the user's own text too.
+  if (shown_in_ != system) text_.clear();
+  shown_in_ = system;
+  const DisplayUnit unit = measure_ ? UnitFor(*measure_, system) : UnitFor(dimension_, system);
+  if (!unit.label.empty())
+    edit_->setToolTip(QString("in %1, or a number with any unit of the scene reader, e.g. %2")
+                          .arg(QString::fromStdString(unit.label), edit_->placeholderText()));
+  const std::string text = measure_ ? FormatQuantity(si, *measure_, system, 6)
+                                    : FormatQuantity(si, dimension_, system, 6);
+  setValue(si, QString::fromStdString(text));
+}
+
 void QuantityField::setValue(double si, const QString& text) {
   // The same value keeps the unit the user typed it in.
   if (!(si == value_ && !text_.isEmpty())) text_ = text;
@@ -61,7 +81,8 @@ void QuantityField::Commit() {
   QString problem;
   double si = 0;
   try {
-    si = ParseQuantityAs(text.toStdString(), dimension_);
+    si = measure_ ? ParseMeasure(text.toStdString(), *measure_)
+                  : ParseQuantityAs(text.toStdString(), dimension_);
     problem = check_ ? check_(si) : QString();
   } catch (const UnitError& e) {
     problem = QString::fromStdString(e.what());
@@ -87,10 +108,6 @@ QString Positive(double v) {
 QString NonNegative(double v) {
   return v >= 0 && std::isfinite(v) ? QString() : "must be ≥ 0";
 }
-// SI value and unit as the field shows a value it did not type.
-QString Si(double v, const char* unit) {
-  return QString("%1 %2").arg(v, 0, 'g', 6).arg(unit);
-}
 
 }  // namespace
 
@@ -114,7 +131,7 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   fabric_message_ = MakeMessageLabel(fabric);
   fabric_form->addRow("outline", shape_);
   fabric_form->addRow("size", extent_);
-  fabric_form->addRow("centre [m]", center_);
+  fabric_form->addRow("centre", center_);
   fabric_form->addRow("elements along x", nx_);
   fabric_form->addRow("elements along y", ny_);
   fabric_form->addRow("element size", element_size_);
@@ -169,8 +186,9 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
 
   auto* material = new QGroupBox("Material", this);
   auto* form = new QFormLayout(material);
-  thickness_ = new QuantityField(dim::kLength, "0.5 mm", Positive, material);
-  weight_ = new QuantityField(dim::kPressure, "0.02665 gf/cm^2", NonNegative, material);
+  thickness_ = new QuantityField(Measure::kThickness, "0.5 mm", Positive, material);
+  // A weight per area, or a mass per area (g/m²) as the reader's areal_density.
+  weight_ = new QuantityField(Measure::kArealWeight, "180 g/m^2", NonNegative, material);
   modulus_ = new QuantityField(dim::kPressure, "60450 gf/cm^2", Positive, material);
   poisson_ = new QuantityField(
       dim::kNone,
@@ -365,6 +383,12 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
   refresh();
 }
 
+void PropertyPanel::setUnitSystem(UnitSystem system) {
+  if (system == units_) return;
+  units_ = system;
+  refresh();
+}
+
 QString PropertyPanel::materialMessage() const {
   return material_message_->text();
 }
@@ -460,18 +484,18 @@ void PropertyPanel::refresh() {
   const bool by_count = rectangle && s.fabric.mesh.elements.has_value();
   std::visit(Overloaded{[&](const RectangleOutline& r) {
                           shape_->setCurrentText("rectangle");
-                          extent_->setText(ListText(r.size));
-                          center_->setText(ListText(r.center));
+                          extent_->setText(ListText(r.size, units_));
+                          center_->setText(ListText(r.center, units_));
                         },
                         [&](const DiskOutline& d) {
                           shape_->setCurrentText("disk");
-                          extent_->setText(QString::number(d.radius));
-                          center_->setText(ListText(d.center));
+                          extent_->setText(QuantityText(d.radius, Measure::kLength, units_));
+                          center_->setText(ListText(d.center, units_));
                         },
                         [&](const PolygonOutline& p) {
                           shape_->setCurrentText("polygon");
                           QStringList vertices;
-                          for (const Vec2& v : p.vertices) vertices << ListText(v);
+                          for (const Vec2& v : p.vertices) vertices << ListText(v, units_);
                           extent_->setText(vertices.join("; "));
                         }},
              s.fabric.outline);
@@ -479,9 +503,9 @@ void PropertyPanel::refresh() {
     if (auto* l = qobject_cast<QLabel*>(fabric_form_->labelForField(field))) l->setText(text);
   };
   label(extent_,
-        rectangle                                               ? "size [m]"
-        : std::holds_alternative<DiskOutline>(s.fabric.outline) ? "radius [m]"
-                                                                : "vertices [m]");
+        rectangle                                               ? "size"
+        : std::holds_alternative<DiskOutline>(s.fabric.outline) ? "radius"
+                                                                : "vertices");
   fabric_form_->setRowVisible(center_, !std::holds_alternative<PolygonOutline>(s.fabric.outline));
   fabric_form_->setRowVisible(nx_, by_count);
   fabric_form_->setRowVisible(ny_, by_count);
@@ -490,18 +514,22 @@ void PropertyPanel::refresh() {
     nx_->setValue((*s.fabric.mesh.elements)[0]);
     ny_->setValue((*s.fabric.mesh.elements)[1]);
   }
-  element_size_->setText(s.fabric.mesh.size ? Si(*s.fabric.mesh.size, "m") : QString());
+  element_size_->setText(
+      s.fabric.mesh.size ? QuantityText(*s.fabric.mesh.size, Measure::kLength, units_) : QString());
   if (s.fabric.imperfection) {
-    imperfection_->setText(Si(s.fabric.imperfection->amplitude, "m"));
+    imperfection_->setText(
+        QuantityText(s.fabric.imperfection->amplitude, Measure::kThickness, units_));
     seed_->setValue(static_cast<int>(s.fabric.imperfection->seed));
     pattern_->setCurrentIndex(s.fabric.imperfection->pattern == ImperfectionPattern::kSmooth ? 0
                                                                                              : 1);
   } else {
     imperfection_->setText("0");
   }
-  // The count of the mesh the engine will make (Gmsh's for curved outlines).
-  try {
-    const Mesh mesh = MeshFabric(SceneOnSolvedMesh(s).fabric);
+  // The count of the mesh the engine made (Gmsh's for curved outlines): the
+  // document's model's, not meshed again.
+  model_ = document_->model();
+  if (model_) {
+    const Mesh& mesh = model_->mesh;
     QString info = QString("%1 nodes, %2 elements, %3 DOFs")
                        .arg(mesh.NodeCount())
                        .arg(mesh.ElementCount())
@@ -513,11 +541,11 @@ void PropertyPanel::refresh() {
                  .arg(s.solver.preset ? QString("accuracy ") + ToString(*s.solver.preset)
                                       : QString("solver.mesh_scale"));
     mesh_info_->setText(info);
-  } catch (const std::exception& e) {
-    mesh_info_->setText(QString::fromStdString(e.what()));
+  } else {
+    mesh_info_->setText(document_->modelProblem());
   }
-  thickness_->setValue(s.material.thickness, Si(s.material.thickness, "m"));
-  weight_->setValue(s.material.areal_weight, Si(s.material.areal_weight, "Pa"));
+  thickness_->setValue(s.material.thickness, units_);
+  weight_->setValue(s.material.areal_weight, units_);
   const auto* iso = std::get_if<IsotropicMembrane>(&s.material.membrane);
   const auto* orthotropic = std::get_if<OrthotropicMembrane>(&s.material.membrane);
   membrane_->setCurrentIndex(iso ? 0 : 1);
@@ -526,14 +554,14 @@ void PropertyPanel::refresh() {
   for (QWidget* f : std::initializer_list<QWidget*>{e1_, e2_, nu12_, g12_})
     material_form_->setRowVisible(f, orthotropic != nullptr);
   if (iso) {
-    modulus_->setValue(iso->youngs_modulus, Si(iso->youngs_modulus, "Pa"));
+    modulus_->setValue(iso->youngs_modulus, units_);
     poisson_->setValue(iso->poisson_ratio, QString::number(iso->poisson_ratio));
   }
   if (orthotropic) {
-    e1_->setValue(orthotropic->e1, Si(orthotropic->e1, "Pa"));
-    e2_->setValue(orthotropic->e2, Si(orthotropic->e2, "Pa"));
+    e1_->setValue(orthotropic->e1, units_);
+    e2_->setValue(orthotropic->e2, units_);
     nu12_->setValue(orthotropic->nu12, QString::number(orthotropic->nu12));
-    g12_->setValue(orthotropic->g12, Si(orthotropic->g12, "Pa"));
+    g12_->setValue(orthotropic->g12, units_);
   }
   angle_->setValue(s.material.angle_deg * M_PI / 180, QString("%1 deg").arg(s.material.angle_deg));
   preset_->setCurrentIndex(s.solver.preset ? static_cast<int>(*s.solver.preset)

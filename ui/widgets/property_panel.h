@@ -8,10 +8,14 @@
 #include <QWidget>
 
 #include <functional>
+#include <memory>
+#include <optional>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "core/model/unit_system.h"
 #include "core/model/units.h"
+#include "core/solve/shell_model.h"
 
 class QCheckBox;
 class QComboBox;
@@ -27,6 +31,8 @@ class SceneDocument;
 
 // A quantity typed with its unit ("0.5 mm"), accepted when it has the
 // field's dimension and passes `check` (which returns "" or what is wrong).
+// Any unit the scene reader takes for the measure is accepted; values the
+// user did not type are shown in the field's unit system.
 class QuantityField : public QWidget {
   Q_OBJECT
  public:
@@ -34,9 +40,16 @@ class QuantityField : public QWidget {
                 const QString& unit_hint,
                 std::function<QString(double)> check,
                 QWidget* parent = nullptr);
+  QuantityField(Measure measure,
+                const QString& unit_hint,
+                std::function<QString(double)> check,
+                QWidget* parent = nullptr);
   // Shows `text` for the SI value `si`, unless the field already shows that
   // value in the user's own unit.
   void setValue(double si, const QString& text);
+  // Shows `si` in the unit system's unit (as setValue, keeping the user's
+  // own text for the same value while the system stays the same).
+  void setValue(double si, UnitSystem system);
   double value() const { return value_; }
   QLineEdit* edit() const { return edit_; }
   QString message() const;
@@ -48,7 +61,9 @@ class QuantityField : public QWidget {
   void Commit();
 
   Dimension dimension_;
+  std::optional<Measure> measure_;  // when the dimension alone does not say the unit
   std::function<QString(double)> check_;
+  std::optional<UnitSystem> shown_in_;  // the system of the last setValue(si, system)
   QLineEdit* edit_;
   QLabel* message_;
   double value_ = 0;
@@ -65,6 +80,9 @@ class PropertyPanel : public QWidget {
   QuantityField* weight() const { return weight_; }
   QuantityField* modulus() const { return modulus_; }
   QComboBox* outlineShape() const { return shape_; }
+  QLineEdit* outlineExtent() const { return extent_; }
+  QLineEdit* outlineCenter() const { return center_; }
+  QLineEdit* elementSize() const { return element_size_; }
   QSpinBox* elementsX() const { return nx_; }
   QSpinBox* elementsY() const { return ny_; }
   QComboBox* solverPreset() const { return preset_; }
@@ -76,6 +94,8 @@ class PropertyPanel : public QWidget {
   QSpinBox* sequencing() const { return sequencing_; }
   QCheckBox* errorEstimate() const { return error_estimate_; }
   QLabel* meshInfo() const { return mesh_info_; }
+  // The model meshInfo() counts: the document's, never meshed here.
+  const std::shared_ptr<const ShellModel>& model() const { return model_; }
   QString fabricMessage() const;
   QString materialMessage() const;
   QComboBox* membrane() const { return membrane_; }
@@ -98,8 +118,12 @@ class PropertyPanel : public QWidget {
   // amplitude (typed, "0" for none), seed, pattern "smooth" or "nodal".
   bool setImperfection(const QString& amplitude, int seed, const QString& pattern);
 
+  UnitSystem unitSystem() const { return units_; }
+
  public slots:
   void refresh();  // from the document's scene
+  // Every field shows its value in `system` from now on (typing takes any unit).
+  void setUnitSystem(UnitSystem system);
 
  private:
   void EditMesh();
@@ -124,6 +148,8 @@ class PropertyPanel : public QWidget {
   QSpinBox *target_iterations_, *max_steps_, *sequencing_;
   QDoubleSpinBox* time_limit_;
   QCheckBox* error_estimate_;
+  std::shared_ptr<const ShellModel> model_;
+  UnitSystem units_ = UnitSystem::kSI;
   bool refreshing_ = false;
 };
 

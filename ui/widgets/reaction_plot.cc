@@ -39,7 +39,7 @@ ReactionPlot::ReactionPlot(QWidget* parent) : QChartView(parent) {
   steps_->setTitleText("step");
   steps_->setLabelFormat("%d");
   forces_ = new QValueAxis;
-  forces_->setTitleText("reaction [N]");
+  forces_->setTitleText("reaction [N]");  // setUnitSystem names another unit
   forces_->setLabelFormat("%.3g");
   chart->addAxis(steps_, Qt::AlignBottom);
   chart->addAxis(forces_, Qt::AlignLeft);
@@ -152,7 +152,8 @@ double ReactionPlot::markerStep() const {
   return marker_->count() > 0 ? marker_->at(0).x() : -1;
 }
 
-double ReactionPlot::Plotted(const Eigen::Vector3d& force) const {
+double ReactionPlot::Plotted(const Eigen::Vector3d& si) const {
+  const Eigen::Vector3d force = si / UnitFor(Measure::kForce, units_).si_factor;
   switch (mode_) {
     case Mode::kMagnitude:
       return force.norm();
@@ -164,6 +165,13 @@ double ReactionPlot::Plotted(const Eigen::Vector3d& force) const {
       return force.z();
   }
   return 0;
+}
+
+void ReactionPlot::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  forces_->setTitleText(
+      QString("reaction [%1]").arg(QString::fromStdString(UnitFor(Measure::kForce, system).label)));
+  Replot();
 }
 
 void ReactionPlot::Replot() {

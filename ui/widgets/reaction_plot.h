@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "core/model/unit_system.h"
+
 class QComboBox;
 class QLineSeries;
 class QValueAxis;
@@ -39,10 +41,14 @@ class ReactionPlot : public QChartView {
   void setCurrentStep(int step);
   void setMode(Mode mode);
   Mode mode() const { return mode_; }
+  // Forces in `system`'s unit (N, gf, oz) from now on: the axis, the points.
+  void setUnitSystem(UnitSystem system);
+  QValueAxis* forceAxis() const { return forces_; }
 
   // Holds plotted (supports, then grippers), and for hold `hold` (in the
   // order of StepState::reactions): its name, the points plotted, and point
-  // `point`'s step, plotted value (in the current mode) and force vector.
+  // `point`'s step, plotted value (in the current mode and unit) and force
+  // vector [N].
   int holds() const { return static_cast<int>(holds_.size()); }
   QString holdName(int hold) const;
   int points(int hold) const;
@@ -71,6 +77,7 @@ class ReactionPlot : public QChartView {
   QValueAxis *steps_ = nullptr, *forces_ = nullptr;
   QComboBox* mode_box_ = nullptr;
   Mode mode_ = Mode::kMagnitude;
+  UnitSystem units_ = UnitSystem::kSI;
   double low_ = 0, high_ = 0;  // the values plotted
   bool empty_ = true;          // nothing plotted yet
   int last_step_ = 0;          // the latest step plotted

@@ -30,10 +30,31 @@ class SceneEdit : public QUndoCommand {
   Scene before_, after_;
 };
 
+namespace {
+
+long long model_builds = 0;
+
+std::shared_ptr<const ShellModel> Build(const Scene& scene) {
+  ++model_builds;
+  return std::make_shared<const ShellModel>(BuildShellModel(scene));
+}
+
+}  // namespace
+
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {}
+
+long long SceneDocument::modelBuilds() {
+  return model_builds;
+}
 
 void SceneDocument::open(const QString& file) {
   Scene scene = ReadScene(file.toStdString());
+  // Modelled before it replaces what is open: a scene the engine refuses
+  // is refused with its message.
+  model_ = Build(scene);
+  model_problem_.clear();
+  checked_.reset();
+  checked_model_.reset();
   scene_ = std::move(scene);
   file_ = file;
   origin_ = QFileInfo(file).absolutePath();
@@ -101,8 +122,11 @@ bool SceneDocument::tryApplyJson(const QString& what,
 }
 
 QString SceneDocument::check(const Scene& after) const {
+  checked_.reset();
+  checked_model_.reset();
   try {
-    BuildShellModel(parse(nlohmann::json::parse(SceneToJson(after).dump())));
+    checked_model_ = Build(parse(nlohmann::json::parse(SceneToJson(after).dump())));
+    checked_ = after;
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
@@ -119,7 +143,24 @@ bool SceneDocument::tryApply(const QString& what, const Scene& after, QString* p
   return true;
 }
 
+void SceneDocument::Model(const Scene& scene) {
+  model_problem_.clear();
+  if (checked_ && *checked_ == scene) {
+    model_ = std::move(checked_model_);
+  } else {
+    try {
+      model_ = Build(scene);
+    } catch (const std::exception& e) {
+      model_.reset();
+      model_problem_ = QString::fromStdString(e.what());
+    }
+  }
+  checked_.reset();
+  checked_model_.reset();
+}
+
 void SceneDocument::set(const Scene& scene) {
+  Model(scene);
   scene_ = scene;
   emit changed();
 }

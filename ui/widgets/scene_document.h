@@ -1,6 +1,9 @@
 // The scene being edited: its file, every edit as an undoable command
 // (QUndoStack) holding the scene before and after, save and open. Editors
-// change the scene only through apply(), so every edit undoes.
+// change the scene only through apply(), so every edit undoes. With the
+// scene, its one shell model: built once per change of the scene (the
+// model check() built for an accepted edit is the one kept), shared by the
+// view, the panels and the run.
 #pragma once
 
 #include <QObject>
@@ -8,10 +11,13 @@
 #include <QUndoStack>
 
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "core/model/scene.h"
+#include "core/solve/shell_model.h"
 
 namespace drape {
 
@@ -24,8 +30,17 @@ class SceneDocument : public QObject {
   const QString& file() const { return file_; }
   QUndoStack* undoStack() { return &undo_; }
   bool isModified() const { return !undo_.isClean(); }
+  // The shell model of scene(); null when the engine cannot model it (after
+  // an apply() not checked, or an undo to such a scene), with the engine's
+  // message in modelProblem(). Changes only with the scene.
+  const std::shared_ptr<const ShellModel>& model() const { return model_; }
+  const QString& modelProblem() const { return model_problem_; }
+  // Shell models the documents of this process built (check(), open, undo,
+  // redo): what shows that an accepted edit builds one.
+  static long long modelBuilds();
 
-  // Reads a scene file (throws SceneError / std::runtime_error); clears undo.
+  // Reads a scene file and models it (throws SceneError /
+  // std::runtime_error, keeping what was open); clears undo.
   void open(const QString& file);
   // A new, unsaved scene from a template file (Save then asks where).
   void openTemplate(const QString& file);
@@ -48,7 +63,8 @@ class SceneDocument : public QObject {
   // resolved in directory(). Throws SceneError with the reader's message.
   Scene parse(const nlohmann::json& document) const;
   // What is wrong with `after` by the reader's rules and the engine's (it
-  // must mesh and every selection must match nodes), or "".
+  // must mesh and every selection must match nodes), or "". The model it
+  // builds is kept for `after`, should it be applied next.
   QString check(const Scene& after) const;
   // check(), then apply(); false with the reason in `problem`.
   bool tryApply(const QString& what, const Scene& after, QString* problem = nullptr);
@@ -68,8 +84,15 @@ class SceneDocument : public QObject {
  private:
   friend class SceneEdit;
   void set(const Scene& scene);
+  // The model of `scene`: check()'s when it was for this scene, else built.
+  void Model(const Scene& scene);
 
   Scene scene_;
+  std::shared_ptr<const ShellModel> model_;
+  QString model_problem_;
+  // The last scene check() accepted, with its model.
+  mutable std::optional<Scene> checked_;
+  mutable std::shared_ptr<const ShellModel> checked_model_;
   QString file_;
   QString origin_;  // the folder the scene's relative references are in
   QUndoStack undo_;

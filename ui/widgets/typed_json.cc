@@ -32,3 +32,29 @@ QString ListText(const std::array<double, 3>& v) {
 }
 
 }  // namespace drape
+
+namespace drape {
+
+QString QuantityText(double si, Measure measure, UnitSystem system) {
+  // A zero is one in every unit; "0" reads plainer than "0 cm".
+  if (si == 0) return "0";
+  return QString::fromStdString(FormatQuantity(si, measure, system, 6));
+}
+
+QString ListText(const std::array<double, 2>& v, UnitSystem system) {
+  return QString("%1, %2").arg(QuantityText(v[0], Measure::kLength, system),
+                               QuantityText(v[1], Measure::kLength, system));
+}
+
+QString ListText(const std::array<double, 3>& v, UnitSystem system) {
+  return ListText(v, Measure::kLength, system);
+}
+
+QString ListText(const std::array<double, 3>& v, Measure measure, UnitSystem system) {
+  return QString("%1, %2, %3")
+      .arg(QuantityText(v[0], measure, system),
+           QuantityText(v[1], measure, system),
+           QuantityText(v[2], measure, system));
+}
+
+}  // namespace drape

@@ -9,6 +9,8 @@
 
 #include <array>
 
+#include "core/model/unit_system.h"
+
 namespace drape {
 
 nlohmann::json TypedQuantity(const QString& text);
@@ -18,5 +20,13 @@ nlohmann::json TypedLists(const QString& text);  // ';' between lists
 // The other way: SI numbers as a field shows them, "0.1, 0, 0.02".
 QString ListText(const std::array<double, 2>& v);
 QString ListText(const std::array<double, 3>& v);
+// Lengths in `system`'s unit, "20 cm, 2 cm" (a zero as "0"): text the
+// scene reader reads back.
+QString ListText(const std::array<double, 2>& v, UnitSystem system);
+QString ListText(const std::array<double, 3>& v, UnitSystem system);
+// Values of `measure` (a force, a moment) in `system`'s unit, "0, 0, -1 gf".
+QString ListText(const std::array<double, 3>& v, Measure measure, UnitSystem system);
+// One value of `measure` in `system`'s unit, 6 digits: "0.469 mm".
+QString QuantityText(double si, Measure measure, UnitSystem system);
 
 }  // namespace drape

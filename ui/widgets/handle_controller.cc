@@ -1,0 +1,121 @@
+#include "ui/widgets/handle_controller.h"
+
+#include <QTimer>
+
+#include <vector>
+
+#include "core/model/obstacle_anchor.h"
+#include "core/solve/path_handles.h"
+#include "ui/widgets/drag_handles.h"
+#include "ui/widgets/path_handles.h"
+#include "ui/widgets/scene_document.h"
+#include "ui/widgets/view_controller.h"
+#include "ui/widgets/vtk_viewport.h"
+
+namespace drape {
+
+HandleController::HandleController(VtkViewport* viewport,
+                                   SceneDocument* document,
+                                   ViewController* view,
+                                   QObject* parent)
+    : QObject(parent), viewport_(viewport), document_(document), view_(view) {
+  path_ = new PathHandles(viewport_->interactor(), this);
+  connect(path_, &PathHandles::released, this, &HandleController::OnPathDragged);
+  connect(path_, &PathHandles::previewed, this, [this] { viewport_->requestRender(); });
+  obstacle_ = new DragHandles(viewport_->interactor(), this);
+  connect(obstacle_, &DragHandles::released, this, &HandleController::OnObstacleDragged);
+  connect(obstacle_, &DragHandles::dragged, this, [this] { viewport_->requestRender(); });
+  // Their widgets point into the renderer: out before it goes, back on the new one.
+  connect(view_, &ViewController::rendererChanging, this, &HandleController::clear);
+  connect(view_, &ViewController::rendererChanged, this, &HandleController::update);
+}
+
+void HandleController::selectMove(int stage, int move) {
+  stage_ = stage;
+  move_ = move;
+  update();
+}
+
+void HandleController::selectObstacle(int obstacle) {
+  obstacle_index_ = obstacle;
+  update();
+}
+
+void HandleController::setStagesShown(bool shown) {
+  stages_shown_ = shown;
+  update();
+}
+
+void HandleController::setObstaclesShown(bool shown) {
+  obstacles_shown_ = shown;
+  update();
+}
+
+void HandleController::setEditable(bool editable) {
+  editable_ = editable;
+  update();
+}
+
+void HandleController::clear() {
+  path_->clear();
+  obstacle_->clear();
+}
+
+// The selected move's path gets handles, unless a run is going on or the
+// move carries no gripper of the model.
+void HandleController::update() {
+  clear();
+  viewport_->requestRender();
+  FrameRenderer* renderer = view_->renderer();
+  if (!editable_ || !renderer || !view_->model()) return;
+  const Scene& scene = view_->scene();
+  if (stages_shown_) {
+    // A gripper's path or an obstacle's: each starts where its carried
+    // point is when the stage begins.
+    std::vector<CarriedMove> moves = GripperMoves(scene, *view_->model());
+    for (const CarriedMove& m : ObstacleMoves(scene)) moves.push_back(m);
+    for (const CarriedMove& m : moves)
+      if (m.stage == stage_ && m.move == move_)
+        path_->show(renderer->renderer(), scene.stages[m.stage].moves[m.move].path, m.start);
+  }
+  if (obstacles_shown_ && obstacle_index_ >= 0 &&
+      obstacle_index_ < static_cast<int>(scene.obstacles.size()))
+    if (const auto anchor = ObstacleAnchor(scene.obstacles[obstacle_index_]))
+      obstacle_->show(renderer->renderer(), {*anchor});
+}
+
+void HandleController::OnObstacleDragged() {
+  Scene after = document_->scene();
+  if (obstacle_index_ < 0 || obstacle_index_ >= static_cast<int>(after.obstacles.size())) return;
+  Obstacle& o = after.obstacles[obstacle_index_];
+  const auto anchor = ObstacleAnchor(o);
+  if (!anchor) return;
+  o = Translated(o, obstacle_->position(0) - *anchor);
+  ApplyAfterDrag("move " + QString::fromStdString(o.name), after);
+}
+
+void HandleController::OnPathDragged(const Path& path) {
+  Scene after = document_->scene();
+  if (stage_ < 0 || stage_ >= static_cast<int>(after.stages.size()) || move_ < 0 ||
+      move_ >= static_cast<int>(after.stages[stage_].moves.size()))
+    return;
+  Move& move = after.stages[stage_].moves[move_];
+  move.path = path;
+  ApplyAfterDrag("drag the path of " +
+                     QString::fromStdString(move.gripper.empty() ? move.obstacle : move.gripper),
+                 after);
+}
+
+// Applied once VTK has finished with the drag's events: the edit remakes
+// the renderer the handles live in. A refused edit puts them back.
+void HandleController::ApplyAfterDrag(const QString& what, const Scene& after) {
+  QTimer::singleShot(0, this, [this, what, after] {
+    QString problem;
+    if (!document_->tryApply(what, after, &problem)) {
+      emit message(problem);
+      update();
+    }
+  });
+}
+
+}  // namespace drape

@@ -1,0 +1,71 @@
+// The handles in the viewport that edit the scene by dragging: the
+// selected move's path (while the stages' editor is up) and the selected
+// obstacle's place (while the obstacles' editor is up). A drag let go is
+// one undoable edit of the document; a refused one puts the handles back.
+// Handles live in the view's renderer: they go when it is remade and come
+// back on the new one; none while a run works on the scene.
+//
+// The home of every drag in the view that edits the scene (a gripper's
+// live drag at the last step belongs here too): it has the viewport, the
+// document and the view (renderer, scene, model, shown state).
+#pragma once
+
+#include <QObject>
+#include <QString>
+
+#include "core/model/scene.h"
+
+namespace drape {
+
+class DragHandles;
+class PathHandles;
+class SceneDocument;
+class ViewController;
+class VtkViewport;
+
+class HandleController : public QObject {
+  Q_OBJECT
+ public:
+  HandleController(VtkViewport* viewport,
+                   SceneDocument* document,
+                   ViewController* view,
+                   QObject* parent = nullptr);
+
+  PathHandles* pathHandles() const { return path_; }
+  DragHandles* obstacleHandles() const { return obstacle_; }
+
+  // What gets handles: the move (stage, move) selected in the stages'
+  // editor, the obstacle selected in the obstacles' editor; each while its
+  // editor's dock is shown.
+  void selectMove(int stage, int move);
+  void selectObstacle(int obstacle);
+  void setStagesShown(bool shown);
+  void setObstaclesShown(bool shown);
+  // Off while a run works on the scene (edits wait for it).
+  void setEditable(bool editable);
+
+  // The handles shown again for the selection, on the view's renderer.
+  void update();
+  // The handles taken out of the view.
+  void clear();
+
+ signals:
+  void message(const QString& text);  // why a drag's edit was refused
+
+ private:
+  void OnPathDragged(const Path& path);
+  void OnObstacleDragged();
+  void ApplyAfterDrag(const QString& what, const Scene& after);
+
+  VtkViewport* viewport_;
+  SceneDocument* document_;
+  ViewController* view_;
+  PathHandles* path_ = nullptr;
+  DragHandles* obstacle_ = nullptr;
+  int stage_ = -1, move_ = -1;                           // the move whose path has handles
+  int obstacle_index_ = -1;                              // the obstacle with a handle
+  bool stages_shown_ = false, obstacles_shown_ = false;  // their docks' tabs are up
+  bool editable_ = true;
+};
+
+}  // namespace drape

@@ -1,0 +1,237 @@
+#include "ui/widgets/view_controller.h"
+
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <QAction>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSlider>
+#include <QTimer>
+#include <QToolButton>
+
+#include <algorithm>
+
+#include "ui/widgets/vtk_viewport.h"
+
+namespace drape {
+namespace {
+
+// The menu shows the choice made by a call, without calling back.
+void ShowChoice(QComboBox* box, const QString& data) {
+  const int index = box->findData(data);
+  if (index < 0 || index == box->currentIndex()) return;
+  const QSignalBlocker block(box);
+  box->setCurrentIndex(index);
+}
+
+}  // namespace
+
+ViewController::ViewController(VtkViewport* viewport, QWidget* bar_parent, QObject* parent)
+    : QObject(parent), viewport_(viewport) {
+  bar_ = new QWidget(bar_parent);
+  auto* row = new QHBoxLayout(bar_);
+  row->setContentsMargins(0, 0, 0, 0);
+  timeline_ = new QSlider(Qt::Horizontal, bar_);
+  timeline_->setRange(0, 0);
+  step_label_ = new QLabel("no scene", bar_);
+  step_label_->setMinimumWidth(260);
+  field_ = new QComboBox(bar_);
+  field_->addItem("fabric colours", "");
+  for (const auto& f : Fields()) field_->addItem(f.title, f.name);
+  colour_map_ = new QComboBox(bar_);
+  for (ColourMap m : {ColourMap::kViridis, ColourMap::kRainbow})
+    colour_map_->addItem(ToString(m), ToString(m));
+  colour_map_->setToolTip(
+      "Colours of the field: viridis (perceptually uniform, reads in grey) or the rainbow");
+  auto* play = new QAction("Play", bar_);
+  connect(play, &QAction::triggered, this, &ViewController::play);
+  auto* play_button = new QToolButton(bar_);
+  play_button->setDefaultAction(play);
+  row->addWidget(play_button);
+  row->addWidget(timeline_, 1);
+  row->addWidget(step_label_);
+  row->addWidget(field_);
+  row->addWidget(colour_map_);
+  player_ = new QTimer(this);
+  player_->setInterval(40);
+  connect(player_, &QTimer::timeout, this, [this] {
+    if (currentStep() >= stepCount()) return player_->stop();
+    timeline_->setValue(currentStep() + 1);
+  });
+  connect(field_, &QComboBox::currentIndexChanged, this, [this](int) {
+    setField(field_->currentData().toString());
+  });
+  connect(colour_map_, &QComboBox::currentIndexChanged, this, [this](int) {
+    setColourMap(colour_map_->currentData().toString());
+  });
+  connect(timeline_, &QSlider::valueChanged, this, [this](int i) {
+    follow_ = i == stepCount();
+    showStep(i);
+  });
+  // Until the user turns the view, it keeps the whole run framed as the
+  // window's layout settles or is resized.
+  connect(viewport_, &VtkViewport::cameraTouched, this, [this] { camera_touched_ = true; });
+  connect(viewport_, &VtkViewport::resized, this, [this] {
+    if (!renderer_ || camera_touched_) return;
+    renderer_->FitCamera();
+    viewport_->requestRender();
+  });
+}
+
+void ViewController::setScene(const Scene& scene, std::shared_ptr<const ShellModel> model) {
+  releaseRenderer();  // it holds the scene and the model it was made for
+  scene_ = scene;
+  model_ = std::move(model);
+  steps_.clear();
+  RebuildRenderer();
+  timeline_->setRange(0, 0);
+  showStep(0);
+}
+
+void ViewController::releaseRenderer() {
+  if (!renderer_) return;
+  emit rendererChanging();
+  viewport_->makeCurrent();
+  renderer_.reset();  // its actors leave the window before new ones come
+  viewport_->doneCurrent();
+}
+
+void ViewController::RebuildRenderer() {
+  releaseRenderer();
+  if (!model_) return;
+  // The camera sees the part and where its grippers will take it.
+  Eigen::AlignedBox3d bounds = RunBounds(scene_, {&model_->reference});
+  for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
+  viewport_->makeCurrent();
+  renderer_ = std::make_unique<FrameRenderer>(
+      scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
+  viewport_->doneCurrent();
+  camera_touched_ = false;
+  emit rendererChanged();
+}
+
+// The view's look changed: a renderer built with it, on the step shown.
+void ViewController::Redraw() {
+  if (!model_) return;
+  RebuildRenderer();
+  showStep(currentStep());
+}
+
+void ViewController::clearSteps() {
+  steps_.clear();
+  timeline_->setRange(0, 0);
+  follow_ = true;
+}
+
+// The view draws only the newest of the steps that arrived together (one
+// draw after the queued ones are taken).
+void ViewController::addStep(std::shared_ptr<const StepState> step) {
+  steps_.push_back(std::move(step));
+  const QSignalBlocker block(timeline_);
+  timeline_->setRange(0, stepCount());
+  if (!follow_ || draw_pending_) return;
+  draw_pending_ = true;
+  QTimer::singleShot(0, this, [this] {
+    draw_pending_ = false;
+    if (!follow_) return;
+    const QSignalBlocker block(timeline_);
+    timeline_->setValue(stepCount());
+    showStep(stepCount());
+  });
+}
+
+int ViewController::currentStep() const {
+  return timeline_->value();
+}
+
+const Eigen::MatrixX3d& ViewController::shownPositions() const {
+  const int i = currentStep();
+  return i > 0 ? steps_[i - 1]->state.positions : model_->reference.positions;
+}
+
+ExportedRun ViewController::exportedRun(bool running) const {
+  return {&scene_, model_.get(), &steps_, currentStep(), running};
+}
+
+RenderOptions ViewController::look() const {
+  RenderOptions look = view_;
+  look.width = viewport_->width();
+  look.height = viewport_->height();
+  return look;
+}
+
+void ViewController::showStep(int index) {
+  if (!renderer_) return;
+  index = std::clamp(index, 0, stepCount());
+  if (timeline_->value() != index) {
+    const QSignalBlocker block(timeline_);
+    timeline_->setValue(index);
+  }
+  Frame frame;
+  ShellState reference = model_->reference;
+  reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
+  if (index == 0) {
+    frame.state = &reference;
+    step_label_->setText("reference state");
+  } else {
+    const StepState& s = *steps_[index - 1];
+    frame.state = &s.state;
+    frame.step = s.step;
+    frame.stage_name = s.stage_name;
+    frame.lambda = s.lambda;
+    if (s.contact) frame.contact_pressure = s.contact->pressure;
+    step_label_->setText(QString("step %1 of %2 — stage %3, λ = %4")
+                             .arg(s.step)
+                             .arg(stepCount())
+                             .arg(QString::fromStdString(s.stage_name))
+                             .arg(s.lambda, 0, 'f', 4));
+  }
+  emit stepShown(index);
+  try {
+    renderer_->Update(frame);
+  } catch (const std::invalid_argument& e) {
+    // A field this state has no values of (contact pressure of the
+    // reference state): say so and keep the picture.
+    emit message(QString::fromStdString(e.what()));
+    return;
+  }
+  viewport_->requestRender();
+}
+
+void ViewController::play() {
+  if (stepCount() == 0) return;
+  if (currentStep() >= stepCount()) timeline_->setValue(0);
+  player_->start();
+}
+
+bool ViewController::setCamera(const QString& view) {
+  if (!QStringList{"iso", "front", "top", "side"}.contains(view)) return false;
+  view_.camera = CameraSpec{};
+  view_.camera.view = view.toStdString();
+  Redraw();
+  return true;
+}
+
+bool ViewController::setField(const QString& name) {
+  std::optional<FieldKind> kind;
+  if (!name.isEmpty()) {
+    const auto f = FindField(name.toStdString());
+    if (!f) return false;
+    kind = f->kind;
+  }
+  view_.field = kind;
+  ShowChoice(field_, name);
+  Redraw();
+  return true;
+}
+
+bool ViewController::setColourMap(const QString& name) {
+  const auto map = ColourMapNamed(name.toStdString());
+  if (!map) return false;
+  view_.colour_map = *map;
+  ShowChoice(colour_map_, name);
+  Redraw();
+  return true;
+}
+
+}  // namespace drape
