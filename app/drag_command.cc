@@ -22,6 +22,7 @@
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
 #include "core/model/scene_error.h"
+#include "core/model/unit_system.h"
 #include "core/model/units.h"
 #include "core/solve/gripper_drag.h"
 #include "core/solve/shell_solver.h"
@@ -37,6 +38,7 @@ struct DragArgs {
   int frames = 40;
   int threads = 0;
   bool quiet = false;
+  std::string units;  // of the release's report; empty: the scene's own
 };
 
 inline constexpr char kFramesFileName[] = "frames.csv";
@@ -176,6 +178,7 @@ int RunDrag(const DragArgs& args) {
   SolveReport report;
   report.command = command;
   report.quiet = args.quiet;
+  report.units = args.units.empty() ? ScenesOwnUnits(args.scene) : *UnitSystemNamed(args.units);
   return SolveIntoFolder(dragged, release, args.output, report, cancel);
 }
 
@@ -201,6 +204,11 @@ void AddDragCommand(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("--threads", args->threads, "Threads for assembly (0: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", args->quiet, "No report");
+  cmd->add_option("--units",
+                  args->units,
+                  "Units of the release's report (as drape run --units); default the units the "
+                  "scene is written in")
+      ->check(CLI::IsMember({"si", "textile", "imperial"}));
   cmd->callback([args, &runner] { runner = [args] { return RunDrag(*args); }; });
 }
 

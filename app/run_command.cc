@@ -34,12 +34,6 @@ struct RunArgs {
   std::string units;            // of the report; empty: the scene's own
 };
 
-// The units the scene file is written in (SI when it cannot be read).
-UnitSystem ScenesOwnUnits(const std::string& file) {
-  std::ifstream in(file);
-  return GuessUnitSystem(std::string{std::istreambuf_iterator<char>(in), {}});
-}
-
 int RunRun(const RunArgs& args) {
 #ifndef DRAPE_WITH_RENDER
   if (args.render_every > 0) return RunInRenderProgram("run");

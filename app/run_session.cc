@@ -4,7 +4,9 @@
 
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -108,6 +110,11 @@ int ExitCode(Termination t) {
     default:
       return 2;
   }
+}
+
+UnitSystem ScenesOwnUnits(const std::string& file) {
+  std::ifstream in(file);
+  return GuessUnitSystem(std::string{std::istreambuf_iterator<char>(in), {}});
 }
 
 int SolveIntoFolder(const Scene& scene,

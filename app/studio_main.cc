@@ -1,7 +1,8 @@
-// `drape-studio [SCENE] [--run] [--select PART[:INDEX[:MOVE]]] [--screenshot
-// FILE] [--window-screenshot FILE] [--quit]`: the workbench. The flags are
-// for scripts and CI: open a scene, choose what to edit, run it, save the
-// window's 3-D view, quit.
+// `drape-studio [SCENE] [--run] [--select PART[:INDEX[:MOVE]]] [--units
+// SYSTEM] [--screenshot FILE] [--window-screenshot FILE] [--quit]`: the
+// workbench. The flags are for scripts and CI: open a scene, choose what
+// to edit and the units it is shown in, run it, save the window's 3-D
+// view, quit.
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -14,6 +15,7 @@
 
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/model_tree.h"
+#include "ui/widgets/unit_settings.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace {
@@ -91,10 +93,24 @@ int main(int argc, char** argv) {
       "loads, obstacles, stages, probes or solver, with an index and a move (0-based), e.g. "
       "stages:1:0",
       "PART[:INDEX[:MOVE]]");
-  parser.addOptions({run, select, screenshot, window_shot, quit});
+  const QCommandLineOption units(
+      "units",
+      "Show quantities in si, textile (cm, gf), imperial (in, oz) or the scene's own units, "
+      "for this session (the Units menu's choice stays as saved)",
+      "SYSTEM");
+  parser.addOptions({run, select, units, screenshot, window_shot, quit});
   parser.process(app);
+  const QString units_name = parser.value(units);
+  const auto system = drape::UnitSystemNamed(units_name.toStdString());
+  if (parser.isSet(units) && !system && units_name != "scene") {
+    std::fprintf(stderr,
+                 "drape-studio: --units %s: one of si, textile, imperial, scene\n",
+                 qPrintable(units_name));
+    return 1;
+  }
 
   drape::MainWindow window;
+  if (parser.isSet(units)) window.units()->useChoice(system);
   window.show();
   // An autosave left behind is a crash's: offer it back (not to scripts).
   if (!parser.isSet(quit) && QFileInfo::exists(drape::MainWindow::autosavePath()) &&

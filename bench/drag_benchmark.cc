@@ -62,13 +62,15 @@ BENCHMARK_CAPTURE(BM_DragFrame, corner_lift_20x20, kCornerLift)
     ->Arg(2)
     ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
-    ->MinTime(2.0);
+    ->MinTime(2.0)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_DragFrame, diagonal_fold_20x20, kDiagonalFold)
     ->Arg(1)
     ->Arg(2)
     ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
-    ->MinTime(2.0);
+    ->MinTime(2.0)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace drape

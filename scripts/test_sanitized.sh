@@ -23,8 +23,10 @@ cd build-asan
 # 10 um strip (2 588 steps), the two sheets on the dress form — and the
 # strip fold followed without acceleration (ten times the steps)
 # (290 s here); the 24-run study resumed after Ctrl-C (25 drape processes)
-# and the two wavy sheets whose paths bend back (5 and 10 s here, minutes there).
+# and the two wavy sheets whose paths bend back (5 and 10 s here, minutes there);
+# `drape drag` end to end (three solves of a 20 x 20 sheet, 8 s here; the
+# drag's own code runs here in the GripperDrag tests).
 # Their code paths are those of tests that run here.
 exec ctest --output-on-failure --parallel "$jobs" \
-  -E 'Extremes.*(mesh_200x200|thickness_1e_5_m|sheet_resting_on_dress_form)|PathFollowing.AccelerationNeedsTenTimesFewerSteps|StudyCli.ATwentyFourRunSweepResumesAfterCtrlC|PathFollowing.ABranchThatBendsBackIsNotGoneRoundForever|PathFollowing.APathThroughAReversedLoadSaysSo' \
+  -E 'Extremes.*(mesh_200x200|thickness_1e_5_m|sheet_resting_on_dress_form)|PathFollowing.AccelerationNeedsTenTimesFewerSteps|StudyCli.ATwentyFourRunSweepResumesAfterCtrlC|PathFollowing.ABranchThatBendsBackIsNotGoneRoundForever|PathFollowing.APathThroughAReversedLoadSaysSo|DragCli.WritesEveryFrameAndTheReleasedRun' \
   "$@"

@@ -1,5 +1,5 @@
 // The workbench while the solver streams a 100 × 100 drape (issue 9), and
-// instant previews (issue 20, BM_Preview below). While streaming: how
+// instant previews (issue 20, BM_Preview and BM_EditToGhost below). While streaming: how
 // late the GUI thread's event loop answers (a 10 ms timer's lateness:
 // target < 100 ms) and how many frames per second the viewport draws when
 // redrawn continuously (target ≥ 30), 10 s of the run. Needs a display:
@@ -22,6 +22,8 @@
 #include "ui/render/display.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/preview_controller.h"
+#include "ui/widgets/scene_document.h"
+#include "ui/widgets/view_controller.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -157,6 +159,87 @@ void BM_Preview(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_Preview)
+    ->DenseRange(0, 1)
+    ->Iterations(1)
+    ->Repetitions(7)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+// The same through the whole window (issue 20): from an accepted edit (the
+// thickness, through SceneDocument::tryApply as a panel makes it) to the
+// viewport's first paint with the edit's ghost. Includes what the preview
+// alone does not: the edit's check and model, the view's new renderer, the
+// coalescing timer and the paint. Counters: the edit's own time (check,
+// model, renderer; synchronous), the preview's first step on the GUI
+// thread, the ghost on the renderer, the paint that shows it.
+// Take the median:
+//   xvfb-run -a build/bench/workbench_benchmark --benchmark_filter=EditToGhost
+void BM_EditToGhost(benchmark::State& bench) {
+  if (!DisplayProblem().empty()) {
+    bench.SkipWithError("no display: run under xvfb-run -a");
+    return;
+  }
+  App();
+  const std::string name = kPreviewScenes[bench.range(0)];
+  bench.SetLabel(name);
+  MainWindow window;
+  window.resize(1280, 800);
+  window.show();
+  window.openScene(
+      QString::fromStdString(std::string(DRAPE_SOURCE_DIR) + "/resources/scenes/" + name));
+  QElapsedTimer settle;
+  settle.start();
+  while (settle.elapsed() < 300) QApplication::processEvents(QEventLoop::AllEvents, 5);
+  const double h = window.document()->scene().material.thickness;
+  int edits = 0;
+  for (auto _ : bench) {
+    // Thinner and back, each a real change (thicker would start inside a table).
+    Scene edited = window.document()->scene();
+    edited.material.thickness = ++edits % 2 ? 0.9 * h : h;
+    QElapsedTimer clock;
+    double step_ms = -1;   // the preview's first step reached the GUI thread
+    double ghost_ms = -1;  // and the window put its ghost on the renderer
+    long long paints = 0;  // the viewport's paints by then
+    int generation = -1;
+    // After the window's own handler (connected first), on the same signal.
+    const QMetaObject::Connection arrival =
+        QObject::connect(window.previews(), &PreviewController::previewStep, [&] {
+          if (step_ms < 0) step_ms = clock.nsecsElapsed() / 1e6;
+          if (ghost_ms < 0 && window.view()->ghostGeneration() == generation) {
+            ghost_ms = clock.nsecsElapsed() / 1e6;
+            paints = window.viewport()->paints();
+          }
+        });
+    clock.start();
+    if (!window.document()->tryApply("thickness", edited)) {
+      bench.SkipWithError("the edit was refused");
+      return;
+    }
+    const double edit_ms = clock.nsecsElapsed() / 1e6;
+    generation = window.previews()->generation();
+    while (clock.elapsed() < 20000) {
+      QApplication::processEvents(QEventLoop::AllEvents, 1);
+      if (ghost_ms >= 0 && window.viewport()->paints() > paints) break;
+    }
+    const double drawn_ms = clock.nsecsElapsed() / 1e6;
+    if (ghost_ms < 0) {
+      bench.SkipWithError("no ghost within 20 s");
+      return;
+    }
+    bench.SetIterationTime(drawn_ms / 1e3);
+    bench.counters["edit_ms"] = edit_ms;
+    bench.counters["step_arrived_ms"] = step_ms;
+    bench.counters["ghost_set_ms"] = ghost_ms;
+    bench.counters["ghost_drawn_ms"] = drawn_ms;
+    // The preview is left to stop (cancelled) before the next edit.
+    QObject::disconnect(arrival);
+    window.previews()->cancel();
+    QElapsedTimer idle;
+    idle.start();
+    while (idle.elapsed() < 300) QApplication::processEvents(QEventLoop::AllEvents, 5);
+  }
+}
+BENCHMARK(BM_EditToGhost)
     ->DenseRange(0, 1)
     ->Iterations(1)
     ->Repetitions(7)

@@ -6,6 +6,10 @@
 #include <stdexcept>
 #include <variant>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "core/solve/stage_loading.h"
 
 namespace drape {
@@ -103,6 +107,9 @@ double GripperDrag::Correct(DragFrame& frame) {
 
 DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
   const auto start = Clock::now();
+#ifdef _OPENMP
+  if (settings_.threads > 0) omp_set_num_threads(settings_.threads);
+#endif
   DragFrame frame;
   frame.frame = ++frames_;
   const ShellState before = basis_.state;

@@ -24,6 +24,7 @@
 #include "support/test_paths.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/reaction_plot.h"
+#include "ui/widgets/unit_settings.h"
 #include "widgets/gui_test.h"
 
 namespace drape {
@@ -60,6 +61,7 @@ TEST_F(Widgets, ReactionPlotShowsEachHoldsForceLiveAsResultJsonHasIt) {
   ASSERT_GT(steps.size(), 10u);
 
   MainWindow window;
+  window.units()->useChoice(UnitSystem::kSI);  // the plot in N, as result.json (not the scene's gf)
   window.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
   ASSERT_TRUE(window.openScene(QString::fromStdString(file.string())));

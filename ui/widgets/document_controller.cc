@@ -3,6 +3,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScopedValueRollback>
 #include <QTimer>
 #include <QUndoStack>
 #include <QWidget>
@@ -29,6 +30,7 @@ bool DocumentController::open(const QString& file) {
   try {
     // The document models it before taking it: a scene that cannot be
     // modelled is refused with the reader's or the engine's message.
+    const QScopedValueRollback opening(opening_, true);
     document_->open(file);
   } catch (const std::exception& e) {
     ShowError(window_, "Cannot open the scene", QString::fromStdString(e.what()));
@@ -37,18 +39,21 @@ bool DocumentController::open(const QString& file) {
   }
   window_->setWindowTitle(QFileInfo(file).fileName() + " — Drape Studio");
   Remember(file);
+  emit opened(file);
   return document_->model() != nullptr;
 }
 
 bool DocumentController::newFromTemplate(const QString& file) {
   if (document_->isLocked()) return false;
   try {
+    const QScopedValueRollback opening(opening_, true);
     document_->openTemplate(file);
   } catch (const std::exception& e) {
     ShowError(window_, "Cannot open the template", QString::fromStdString(e.what()));
     return false;
   }
   window_->setWindowTitle("untitled (" + QFileInfo(file).completeBaseName() + ") — Drape Studio");
+  emit opened(file);
   return document_->model() != nullptr;
 }
 
@@ -73,11 +78,15 @@ bool DocumentController::autosave() {
 
 bool DocumentController::recoverAutosave() {
   if (document_->isLocked() || !QFileInfo::exists(SceneKeeper::AutosavePath())) return false;
+  opening_ = true;
   const KeeperOutcome recovered = SceneKeeper::Recover(*document_);
-  if (recovered.done)
+  opening_ = false;
+  if (recovered.done) {
     emit message(recovered.message);
-  else
+    emit opened(document_->file());
+  } else {
     ShowError(window_, "Cannot recover the autosaved scene", recovered.message);
+  }
   return recovered.done;
 }
 
@@ -139,7 +148,7 @@ void DocumentController::OnChanged() {
   const bool renumbered = model->NodeCount() != node_count_;
   if (renumbered && node_count_ >= 0) WarnOfNodeNumbers(document_->scene());
   node_count_ = model->NodeCount();
-  emit accepted(renumbered);
+  emit accepted(renumbered, !opening_);
   emit message(QString("%1: %2 nodes, %3 elements")
                    .arg(QString::fromStdString(document_->scene().name))
                    .arg(model->NodeCount())

@@ -44,8 +44,11 @@ class DocumentController : public QObject {
 
  signals:
   // The document's scene and model are the accepted ones now; `renumbered`:
-  // its nodes are not those of the scene accepted before (or none was).
-  void accepted(bool renumbered);
+  // its nodes are not those of the scene accepted before (or none was);
+  // `edited`: an edit, undo or redo (not an open, a template or a recovery).
+  void accepted(bool renumbered, bool edited);
+  // A scene was opened from `file` (for a template: the template's file).
+  void opened(const QString& file);
   void message(const QString& text);
 
  private:
@@ -58,7 +61,8 @@ class DocumentController : public QObject {
   QWidget* window_;
   QMenu* recent_menu_ = nullptr;
   QTimer* autosave_timer_ = nullptr;
-  int node_count_ = -1;  // of the scene accepted last; -1: none yet
+  int node_count_ = -1;   // of the scene accepted last; -1: none yet
+  bool opening_ = false;  // the document's changes come from open, not edits
 };
 
 }  // namespace drape

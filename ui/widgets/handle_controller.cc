@@ -7,6 +7,7 @@
 #include "core/model/obstacle_anchor.h"
 #include "core/solve/path_handles.h"
 #include "ui/widgets/drag_handles.h"
+#include "ui/widgets/live_drag.h"
 #include "ui/widgets/path_handles.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/view_controller.h"
@@ -25,6 +26,15 @@ HandleController::HandleController(VtkViewport* viewport,
   obstacle_ = new DragHandles(viewport_->interactor(), this);
   connect(obstacle_, &DragHandles::released, this, &HandleController::OnObstacleDragged);
   connect(obstacle_, &DragHandles::dragged, this, [this] { viewport_->requestRender(); });
+  live_ = new LiveDrag(viewport_, this);
+  connect(live_, &LiveDrag::message, this, &HandleController::message);
+  connect(live_, &LiveDrag::released, this, [this](const QString& what, const Scene& after) {
+    ApplyAfterDrag(what, after, [this] { emit gripperDragApplied(); });
+  });
+  // The gripper handles are there at the last step only.
+  connect(view_, &ViewController::stepShown, this, [this] {
+    if (!live_->isDragging()) update();
+  });
   // Their widgets point into the renderer: out before it goes, back on the new one.
   connect(view_, &ViewController::rendererChanging, this, &HandleController::clear);
   connect(view_, &ViewController::rendererChanged, this, &HandleController::update);
@@ -51,14 +61,25 @@ void HandleController::setObstaclesShown(bool shown) {
   update();
 }
 
+void HandleController::setGrippersShown(bool shown) {
+  grippers_shown_ = shown;
+  update();
+}
+
 void HandleController::setEditable(bool editable) {
   editable_ = editable;
+  update();
+}
+
+void HandleController::setSolved(std::shared_ptr<ShellSolver> solver, const Scene& scene) {
+  live_->setSolved(std::move(solver), scene);
   update();
 }
 
 void HandleController::clear() {
   path_->clear();
   obstacle_->clear();
+  live_->clear();
 }
 
 // The selected move's path gets handles, unless a run is going on or the
@@ -82,6 +103,9 @@ void HandleController::update() {
       obstacle_index_ < static_cast<int>(scene.obstacles.size()))
     if (const auto anchor = ObstacleAnchor(scene.obstacles[obstacle_index_]))
       obstacle_->show(renderer->renderer(), {*anchor});
+  if (grippers_shown_ && view_->stepCount() > 0 && view_->currentStep() == view_->stepCount() &&
+      live_->canDrag(document_->scene()))
+    live_->show(renderer);
 }
 
 void HandleController::OnObstacleDragged() {
@@ -108,12 +132,16 @@ void HandleController::OnPathDragged(const Path& path) {
 
 // Applied once VTK has finished with the drag's events: the edit remakes
 // the renderer the handles live in. A refused edit puts them back.
-void HandleController::ApplyAfterDrag(const QString& what, const Scene& after) {
-  QTimer::singleShot(0, this, [this, what, after] {
+void HandleController::ApplyAfterDrag(const QString& what,
+                                      const Scene& after,
+                                      std::function<void()> applied) {
+  QTimer::singleShot(0, this, [this, what, after, applied] {
     QString problem;
     if (!document_->tryApply(what, after, &problem)) {
       emit message(problem);
       update();
+    } else if (applied) {
+      applied();
     }
   });
 }

@@ -5,20 +5,25 @@
 // Handles live in the view's renderer: they go when it is remade and come
 // back on the new one; none while a run works on the scene.
 //
-// The home of every drag in the view that edits the scene (a gripper's
-// live drag at the last step belongs here too): it has the viewport, the
-// document and the view (renderer, scene, model, shown state).
+// The home of every drag in the view that edits the scene, a gripper's
+// live drag at a complete run's last step included: it has the viewport,
+// the document and the view (renderer, scene, model, shown state).
 #pragma once
 
 #include <QObject>
 #include <QString>
+
+#include <functional>
+#include <memory>
 
 #include "core/model/scene.h"
 
 namespace drape {
 
 class DragHandles;
+class LiveDrag;
 class PathHandles;
+class ShellSolver;
 class SceneDocument;
 class ViewController;
 class VtkViewport;
@@ -33,6 +38,12 @@ class HandleController : public QObject {
 
   PathHandles* pathHandles() const { return path_; }
   DragHandles* obstacleHandles() const { return obstacle_; }
+  LiveDrag* liveDrag() const { return live_; }
+
+  // A complete run's solver at the end of `scene`: while the view shows
+  // that scene's last step and the grippers' editor is up, each held
+  // gripper has a handle that drags the fabric live (live_drag.h).
+  void setSolved(std::shared_ptr<ShellSolver> solver, const Scene& scene);
 
   // What gets handles: the move (stage, move) selected in the stages'
   // editor, the obstacle selected in the obstacles' editor; each while its
@@ -41,6 +52,8 @@ class HandleController : public QObject {
   void selectObstacle(int obstacle);
   void setStagesShown(bool shown);
   void setObstaclesShown(bool shown);
+  // The grippers' live-drag handles show while their editor's dock does.
+  void setGrippersShown(bool shown);
   // Off while a run works on the scene (edits wait for it).
   void setEditable(bool editable);
 
@@ -51,20 +64,28 @@ class HandleController : public QObject {
 
  signals:
   void message(const QString& text);  // why a drag's edit was refused
+  // A gripper's live drag was let go and applied: the edited scene wants
+  // its full solve.
+  void gripperDragApplied();
 
  private:
   void OnPathDragged(const Path& path);
   void OnObstacleDragged();
-  void ApplyAfterDrag(const QString& what, const Scene& after);
+  // `applied` runs once the edit is accepted.
+  void ApplyAfterDrag(const QString& what,
+                      const Scene& after,
+                      std::function<void()> applied = nullptr);
 
   VtkViewport* viewport_;
   SceneDocument* document_;
   ViewController* view_;
   PathHandles* path_ = nullptr;
   DragHandles* obstacle_ = nullptr;
+  LiveDrag* live_ = nullptr;
   int stage_ = -1, move_ = -1;                           // the move whose path has handles
   int obstacle_index_ = -1;                              // the obstacle with a handle
   bool stages_shown_ = false, obstacles_shown_ = false;  // their docks' tabs are up
+  bool grippers_shown_ = false;
   bool editable_ = true;
 };
 

@@ -14,13 +14,16 @@
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/obstacles_panel.h"
+#include "ui/widgets/preview_controller.h"
 #include "ui/widgets/probe_plot.h"
 #include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/reaction_plot.h"
+#include "ui/widgets/run_controller.h"
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
+#include "ui/widgets/unit_settings.h"
 #include "ui/widgets/vtk_viewport.h"
 #include "ui/widgets/workbench_actions.h"
 
@@ -41,12 +44,29 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   picking_ = new PickingController(viewport_, view_, this);
   handles_ = new HandleController(viewport_, document_, view_, this);
   monitor_ = new RunMonitor(view_, this, statusBar(), this);
+  units_ = new UnitSettings(this);
+  previews_ = new PreviewController(this);
   BuildDocks();
+  ShowUnits(units_->system());
+  connect(units_, &UnitSettings::changed, this, &MainWindow::ShowUnits);
+  connect(documents_, &DocumentController::opened, units_, &UnitSettings::followSceneFile);
   auto say = [this](const QString& text) { statusBar()->showMessage(text); };
+  connect(previews_, &PreviewController::previewStep, this, [this](int g, auto model, auto step) {
+    if (g == previews_->generation()) view_->setGhost(g, std::move(model), std::move(step));
+  });
+  connect(previews_, &PreviewController::previewFinished, this, [say] {
+    say("draft preview ready — Run to refine");
+  });
+  connect(previews_, &PreviewController::previewFailed, this, [say](int, const QString& why) {
+    say("no draft preview: " + why);
+  });
   connect(documents_, &DocumentController::message, this, say);
   connect(view_, &ViewController::message, this, say);
   connect(picking_, &PickingController::message, this, say);
   connect(handles_, &HandleController::message, this, say);
+  // A complete run's end can be dragged by its grippers; let go, it is solved again.
+  connect(monitor_->controller(), &RunController::solved, handles_, &HandleController::setSolved);
+  connect(handles_, &HandleController::gripperDragApplied, this, &MainWindow::run);
   connect(monitor_, &RunMonitor::message, this, say);
   connect(monitor_, &RunMonitor::controlsChanged, this, &MainWindow::UpdateControls);
   connect(monitor_, &RunMonitor::finished, this, &MainWindow::OnFinished);
@@ -83,6 +103,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
+  previews_->cancel();
   delete monitor_;  // stops the run and joins its thread before the window goes
   monitor_ = nullptr;
   // The renderer's actors (and the handles in it) live in the viewport's
@@ -130,6 +151,10 @@ void MainWindow::BuildDocks() {
   // isVisible(); the signal says when its tab is selected or unselected.)
   connect(
       stages_dock, &QDockWidget::visibilityChanged, handles_, &HandleController::setStagesShown);
+  connect(grippers_dock,
+          &QDockWidget::visibilityChanged,
+          handles_,
+          &HandleController::setGrippersShown);
   connect(obstacles_dock,
           &QDockWidget::visibilityChanged,
           handles_,
@@ -185,12 +210,27 @@ void MainWindow::ShowEditor(int part, int index, int move) {
 }
 
 // The document's scene was modelled: the view shows it with the document's
-// model (the one the panels show); picks on other nodes go.
-void MainWindow::OnAccepted(bool renumbered) {
+// model (the one the panels show); picks on other nodes go. An edit keeps
+// the last run's end in view (stale) and starts a draft preview of the
+// edited scene, its ghost drawn over it.
+void MainWindow::OnAccepted(bool renumbered, bool edited) {
   if (renumbered) picking_->clear();
-  view_->setScene(document_->scene(), document_->model());
+  view_->setScene(document_->scene(), document_->model(), edited);
   monitor_->estimateLabel()->clear();
+  if (edited)
+    previews_->request(document_->scene());
+  else
+    previews_->cancel();
   UpdateControls();
+}
+
+void MainWindow::ShowUnits(UnitSystem system) {
+  properties_->setUnitSystem(system);
+  loads_->setUnitSystem(system);
+  stages_->moves()->setUnitSystem(system);
+  monitor_->probePlot()->setUnitSystem(system);
+  monitor_->reactionPlot()->setUnitSystem(system);
+  view_->setUnitSystem(system);
 }
 
 void MainWindow::UpdateControls() {
@@ -206,6 +246,8 @@ void MainWindow::UpdateControls() {
 void MainWindow::run() {
   if (!view_->model() || isRunning()) return;
   handles_->setEditable(false);  // no edits while the run goes on
+  previews_->cancel();           // the run refines what the preview drafted
+  view_->clearGhost();
   monitor_->start(view_->scene());
   document_->setLocked(true);
   UpdateControls();

@@ -3,7 +3,9 @@
 // its 3-D view and timeline (ViewController), picking (PickingController)
 // and drag handles (HandleController) in the view, a run on a worker thread
 // with its plots (RunMonitor), the editors docked at the left, the menus
-// and toolbar (WorkbenchActions), export (ExportController).
+// and toolbar (WorkbenchActions), export (ExportController), the unit
+// system everything is shown in (UnitSettings, the Units menu) and a draft
+// preview of each edit drawn as a ghost (PreviewController).
 #pragma once
 
 #include <QMainWindow>
@@ -12,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/model/unit_system.h"
 #include "core/solve/error_estimate.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
@@ -35,6 +38,7 @@ namespace drape {
 class DragHandles;
 class HoldsPanel;
 class LoadsPanel;
+class PreviewController;
 class ModelTree;
 class ObstaclesPanel;
 class PathHandles;
@@ -46,6 +50,7 @@ class ResidualPlot;
 class RunPlot;
 class SceneDocument;
 class StagesPanel;
+class UnitSettings;
 class VtkViewport;
 class WorkbenchActions;
 
@@ -78,6 +83,8 @@ class MainWindow : public QMainWindow {
   HandleController* handles() const { return handles_; }
   RunMonitor* runMonitor() const { return monitor_; }
   WorkbenchActions* actions() const { return actions_; }
+  UnitSettings* units() const { return units_; }
+  PreviewController* previews() const { return previews_; }
   PropertyPanel* properties() const { return properties_; }
   StagesPanel* stages() const { return stages_; }
   HoldsPanel* supports() const { return supports_; }
@@ -147,7 +154,8 @@ class MainWindow : public QMainWindow {
  private:
   void closeEvent(QCloseEvent* event) override;
   void BuildDocks();
-  void OnAccepted(bool renumbered);
+  void OnAccepted(bool renumbered, bool edited);
+  void ShowUnits(UnitSystem system);
   void OnFinished(const SolveSummary& summary);
   void UpdateControls();
   // A written (or cancelled) export in the status bar; otherwise its reason in `error`.
@@ -164,6 +172,8 @@ class MainWindow : public QMainWindow {
   HandleController* handles_ = nullptr;
   RunMonitor* monitor_ = nullptr;
   WorkbenchActions* actions_ = nullptr;
+  UnitSettings* units_ = nullptr;
+  PreviewController* previews_ = nullptr;
   PropertyPanel* properties_ = nullptr;
   StagesPanel* stages_ = nullptr;
   HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;

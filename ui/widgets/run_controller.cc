@@ -11,6 +11,7 @@ RunController::RunController(QObject* parent) : QObject(parent) {
   qRegisterMetaType<drape::SolveSummary>();
   qRegisterMetaType<drape::ErrorEstimate>();
   qRegisterMetaType<std::shared_ptr<const drape::StepState>>();
+  qRegisterMetaType<std::shared_ptr<drape::ShellSolver>>();
 }
 
 RunController::~RunController() {
@@ -35,6 +36,12 @@ bool RunController::start(const Scene& scene) {
         if (worker_) worker_->consumed();
         emit stepConverged(std::move(step));
       },
+      Qt::QueuedConnection);
+  connect(
+      worker_,
+      &SolverWorker::solved,
+      this,
+      [this, scene](std::shared_ptr<ShellSolver> solver) { emit solved(std::move(solver), scene); },
       Qt::QueuedConnection);
   connect(worker_,
           &SolverWorker::estimatingError,

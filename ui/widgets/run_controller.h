@@ -38,6 +38,8 @@ class RunController : public QObject {
   // Each converged step, in order; the queue to the worker is freed as it
   // is delivered.
   void stepConverged(std::shared_ptr<const drape::StepState> step);
+  // The run completed every stage: its solver, at the end of `scene`.
+  void solved(std::shared_ptr<drape::ShellSolver> solver, const drape::Scene& scene);
   void estimating();  // the run is complete; its error estimate has begun
   void estimated(const drape::ErrorEstimate& estimate);
   void failed(const QString& message);  // the run could not start (finished follows)

@@ -55,13 +55,14 @@ StepDecision SolverWorker::Observe(const StepState& step) {
 void SolverWorker::run(const Scene& scene) {
   try {
     const SolverOptions options = SolverOptions::FromScene(scene.solver);
-    ShellSolver solver(scene, options);
+    auto solver = std::make_shared<ShellSolver>(scene, options);
     std::vector<NamedVector> last_probes;  // the final step's, as `drape run` takes them
-    const SolveSummary summary = solver.Solve({[&](const StepState& s) {
-                                                last_probes = s.probes;
-                                                return Observe(s);
-                                              }},
-                                              &cancel_);
+    const SolveSummary summary = solver->Solve({[&](const StepState& s) {
+                                                 last_probes = s.probes;
+                                                 return Observe(s);
+                                               }},
+                                               &cancel_);
+    if (summary.IsComplete()) emit solved(std::move(solver));
     if (summary.IsComplete() && scene.solver.error_estimate) {
       emit estimatingError();
       ErrorEstimate estimate;

@@ -46,6 +46,10 @@ class SolverWorker : public QObject {
 
  signals:
   void stepConverged(std::shared_ptr<const drape::StepState> step);
+  // A run that completed every stage hands its solver over (before the
+  // estimate and finished): the workbench drags grippers from its end. The
+  // worker no longer touches it.
+  void solved(std::shared_ptr<drape::ShellSolver> solver);
   void estimatingError();  // the run is complete; its estimate has begun
   void errorEstimated(const drape::ErrorEstimate& estimate);
   void finished(const drape::SolveSummary& summary);

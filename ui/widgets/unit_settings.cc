@@ -40,6 +40,10 @@ void UnitSettings::setChoice(std::optional<UnitSystem> choice) {
   Set(choice, scene_);
 }
 
+void UnitSettings::useChoice(std::optional<UnitSystem> choice) {
+  Set(choice, scene_);
+}
+
 void UnitSettings::setSceneSystem(UnitSystem system) {
   Set(choice_, system);
 }

@@ -38,6 +38,8 @@ class UnitSettings : public QObject {
  public slots:
   // Saved in QSettings; emits changed() when the system in effect changes.
   void setChoice(std::optional<UnitSystem> choice);
+  // The same for this session only (drape-studio --units): not saved.
+  void useChoice(std::optional<UnitSystem> choice);
   // The scene's own system (for "Scene's own"); emits changed() when in effect.
   void setSceneSystem(UnitSystem system);
   // The scene's own system guessed from the units its file is written in

@@ -78,11 +78,23 @@ ViewController::ViewController(VtkViewport* viewport, QWidget* bar_parent, QObje
   });
 }
 
-void ViewController::setScene(const Scene& scene, std::shared_ptr<const ShellModel> model) {
+void ViewController::setScene(const Scene& scene,
+                              std::shared_ptr<const ShellModel> model,
+                              bool keep_result) {
   releaseRenderer();  // it holds the scene and the model it was made for
+  // The last run's end stays in view over an edit that keeps its nodes and
+  // obstacles (the new scene's ghost is drawn over it).
+  std::shared_ptr<const StepState> kept = !keep_result || !model ? nullptr
+                                          : !steps_.empty()      ? steps_.back()
+                                                                 : stale_;
+  if (kept && (kept->state.positions.rows() != model->NodeCount() ||
+               kept->state.obstacles.size() != scene.obstacles.size()))
+    kept.reset();
+  stale_ = std::move(kept);
   scene_ = scene;
   model_ = std::move(model);
   steps_.clear();
+  clearGhost();
   RebuildRenderer();
   timeline_->setRange(0, 0);
   showStep(0);
@@ -107,6 +119,8 @@ void ViewController::RebuildRenderer() {
       scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
   viewport_->doneCurrent();
   camera_touched_ = false;
+  drawn_generation_ = -1;
+  DrawGhost();  // the preview's ghost on the new renderer too
   emit rendererChanged();
 }
 
@@ -121,6 +135,55 @@ void ViewController::clearSteps() {
   steps_.clear();
   timeline_->setRange(0, 0);
   follow_ = true;
+  if (stale_) {
+    stale_.reset();
+    showStep(0);
+  }
+}
+
+void ViewController::setGhost(int generation,
+                              std::shared_ptr<const ShellModel> model,
+                              std::shared_ptr<const StepState> step) {
+  ghost_generation_ = generation;
+  ghost_model_ = std::move(model);
+  ghost_step_ = std::move(step);
+  if (drawn_generation_ != generation) {
+    // A new preview's first step: on the renderer at once, so the paint
+    // already due (the edit's new renderer) shows it.
+    DrawGhost();
+    viewport_->requestRender();
+    return;
+  }
+  if (ghost_pending_) return;
+  ghost_pending_ = true;
+  QTimer::singleShot(0, this, [this] {
+    ghost_pending_ = false;
+    DrawGhost();
+    viewport_->requestRender();
+  });
+}
+
+void ViewController::DrawGhost() {
+  if (!renderer_ || !ghost_step_) return;
+  try {
+    renderer_->SetGhost(ghost_model_->mesh, ghost_step_->state);
+    drawn_generation_ = ghost_generation_;
+  } catch (const std::invalid_argument& e) {
+    emit message(QString::fromStdString(e.what()));
+  }
+}
+
+void ViewController::clearGhost() {
+  ghost_model_.reset();
+  ghost_step_.reset();
+  ghost_generation_ = drawn_generation_ = -1;
+  if (!renderer_ || !renderer_->HasGhost()) return;
+  renderer_->ClearGhost();
+  viewport_->requestRender();
+}
+
+int ViewController::ghostGeneration() const {
+  return renderer_ && renderer_->HasGhost() ? drawn_generation_ : -1;
 }
 
 // The view draws only the newest of the steps that arrived together (one
@@ -146,7 +209,8 @@ int ViewController::currentStep() const {
 
 const Eigen::MatrixX3d& ViewController::shownPositions() const {
   const int i = currentStep();
-  return i > 0 ? steps_[i - 1]->state.positions : model_->reference.positions;
+  if (i > 0) return steps_[i - 1]->state.positions;
+  return stale_ ? stale_->state.positions : model_->reference.positions;
 }
 
 ExportedRun ViewController::exportedRun(bool running) const {
@@ -170,7 +234,16 @@ void ViewController::showStep(int index) {
   Frame frame;
   ShellState reference = model_->reference;
   reference.obstacles.assign(scene_.obstacles.size(), ObstaclePlacement{});
-  if (index == 0) {
+  if (index == 0 && stale_) {
+    // The last run's end over an edit: what the ghost is to be compared with.
+    frame.state = &stale_->state;
+    frame.step = stale_->step;
+    frame.stage_name = stale_->stage_name + " (before the edit)";
+    frame.lambda = stale_->lambda;
+    if (stale_->contact) frame.contact_pressure = stale_->contact->pressure;
+    step_label_->setText(
+        QString("step %1 of the last run — stale: edited since").arg(stale_->step));
+  } else if (index == 0) {
     frame.state = &reference;
     step_label_->setText("reference state");
   } else {
@@ -223,6 +296,12 @@ bool ViewController::setField(const QString& name) {
   ShowChoice(field_, name);
   Redraw();
   return true;
+}
+
+void ViewController::setUnitSystem(UnitSystem system) {
+  if (view_.units == system) return;
+  view_.units = system;
+  Redraw();
 }
 
 bool ViewController::setColourMap(const QString& name) {

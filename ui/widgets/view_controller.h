@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 #include "core/solve/shell_model.h"
 #include "core/solve/step_state.h"
 #include "ui/render/frame_renderer.h"
@@ -41,8 +42,13 @@ class ViewController : public QObject {
   QLabel* stepLabel() const { return step_label_; }
 
   // A scene and its model to show from the reference state: the steps of
-  // an earlier run go, and a renderer is made for them.
-  void setScene(const Scene& scene, std::shared_ptr<const ShellModel> model);
+  // an earlier run go, and a renderer is made for them. With `keep_result`
+  // (an edit that kept the nodes and the obstacles) the last run's final
+  // state stays in view at step 0, marked stale, until the next run
+  // (clearSteps) or a scene that cannot take it.
+  void setScene(const Scene& scene,
+                std::shared_ptr<const ShellModel> model,
+                bool keep_result = false);
   const Scene& scene() const { return scene_; }
   const std::shared_ptr<const ShellModel>& model() const { return model_; }
   FrameRenderer* renderer() const { return renderer_.get(); }
@@ -64,11 +70,28 @@ class ViewController : public QObject {
   // screen does.
   RenderOptions look() const;
 
-  void showStep(int index);  // 0: the reference state
+  // A preview's ghost (PreviewController::previewStep): `step` on the
+  // draft's `model`, drawn over the view; a burst of steps is drawn once
+  // (the newest), and again on every new renderer, until clearGhost() or
+  // setScene(). `generation` is the preview's, kept for ghostGeneration().
+  void setGhost(int generation,
+                std::shared_ptr<const ShellModel> model,
+                std::shared_ptr<const StepState> step);
+  void clearGhost();
+  // The ghost drawn (-1 when none) and its model (the draft's).
+  int ghostGeneration() const;
+  const std::shared_ptr<const ShellModel>& ghostModel() const { return ghost_model_; }
+  // The last run's final state shown at step 0 after an edit (null: none).
+  const std::shared_ptr<const StepState>& staleResult() const { return stale_; }
+
+  void showStep(int index);  // 0: the reference state (or the stale result)
   void play();               // through the timeline from the shown step
   bool setField(const QString& name);
   bool setColourMap(const QString& name);
   bool setCamera(const QString& view);
+  // The colour bar's title and labels in `system` (RenderOptions::units).
+  void setUnitSystem(UnitSystem system);
+  UnitSystem unitSystem() const { return view_.units; }
 
  signals:
   void rendererChanging();  // the renderer is about to go: take out what lives in it
@@ -79,12 +102,19 @@ class ViewController : public QObject {
  private:
   void RebuildRenderer();
   void Redraw();
+  void DrawGhost();
 
   VtkViewport* viewport_;
   Scene scene_;
   std::shared_ptr<const ShellModel> model_;
   std::unique_ptr<FrameRenderer> renderer_;
   std::vector<std::shared_ptr<const StepState>> steps_;
+  std::shared_ptr<const StepState> stale_;  // the last run's end, after an edit
+  std::shared_ptr<const ShellModel> ghost_model_;
+  std::shared_ptr<const StepState> ghost_step_;
+  int ghost_generation_ = -1;   // of ghost_step_
+  int drawn_generation_ = -1;   // of the ghost on the renderer
+  bool ghost_pending_ = false;  // the newest ghost is to be drawn
   RenderOptions view_;
   QWidget* bar_ = nullptr;
   QSlider* timeline_ = nullptr;

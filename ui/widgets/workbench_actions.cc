@@ -19,6 +19,7 @@
 #include "ui/widgets/material_dialog.h"
 #include "ui/widgets/picking_controller.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/unit_settings.h"
 
 namespace drape {
 
@@ -36,6 +37,8 @@ WorkbenchActions::WorkbenchActions(MainWindow* window) : QObject(window), window
   material_ = edit->addAction("&Material…", this, [this, document] {
     auto* dialog = new MaterialDialog(document, window_);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setUnitSystem(window_->units()->system());
+    connect(window_->units(), &UnitSettings::changed, dialog, &MaterialDialog::setUnitSystem);
     dialog->show();
   });
   pick_ = edit->addAction(
@@ -45,6 +48,7 @@ WorkbenchActions::WorkbenchActions(MainWindow* window) : QObject(window), window
   edit->addAction("&Clear picked nodes", window_, &MainWindow::clearPicked);
   BuildToolBar();
   BuildViewMenu();
+  window_->menuBar()->addMenu(window_->units()->menu(window_));
 }
 
 void WorkbenchActions::BuildFileMenu() {

@@ -1,0 +1,137 @@
+// The live drag in the workbench (ui/widgets/live_drag.h): a gripper handle
+// at a complete run's last step, the fabric following it frame by frame,
+// and the release solved in full as one undoable edit.
+#include <gtest/gtest.h>
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <variant>
+#include <vector>
+
+#include "core/io/scene_reader.h"
+#include "core/solve/gripper_drag.h"
+#include "core/solve/shell_solver.h"
+#include "support/test_paths.h"
+#include "ui/widgets/drag_handles.h"
+#include "ui/widgets/handle_controller.h"
+#include "ui/widgets/live_drag.h"
+#include "ui/widgets/main_window.h"
+#include "ui/widgets/model_tree.h"
+#include "ui/widgets/run_monitor.h"
+#include "ui/widgets/scene_document.h"
+#include "ui/widgets/view_controller.h"
+#include "widgets/gui_test.h"
+
+namespace drape {
+namespace {
+
+const double kSize = 0.2;  // the corner-lift square's side [m]
+
+std::string CornerLift() {
+  return (test::SourceDir() / "tests" / "data" / "corner-lift-20x20.json").string();
+}
+
+class LiveDragTest : public Widgets {
+ protected:
+  void SetUp() override {
+    Widgets::SetUp();
+    if (IsSkipped()) return;
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1000, 700);
+    window_->show();
+    ASSERT_TRUE(window_->openScene(QString::fromStdString(CornerLift())));
+    QSignalSpy finished(window_->runMonitor(), &RunMonitor::finished);
+    window_->run();
+    ASSERT_TRUE(finished.wait(120000));
+    // The handles come with the grippers' editor.
+    window_->tree()->setCurrentItem(window_->tree()->item(ModelTree::Part::kGrippers, 0));
+    QTest::qWait(20);
+  }
+  void TearDown() override { window_.reset(); }
+
+  LiveDrag* live() const { return window_->handles()->liveDrag(); }
+  std::unique_ptr<MainWindow> window_;
+};
+
+TEST_F(LiveDragTest, TheFabricFollowsAGripperDraggedAcross40FramesAndTheReleaseIsSolvedInFull) {
+  ASSERT_EQ(live()->handles()->count(), 1) << "one held gripper at the last step";
+  ASSERT_EQ(live()->grippers(), std::vector<std::string>{"corner"});
+  const Eigen::Vector3d start = live()->handles()->position(0);
+  const int corner = window_->view()->model()->grippers[0].nodes.front();
+  EXPECT_NEAR(
+      (start - window_->step(window_->stepCount()).state.positions.row(corner).transpose()).norm(),
+      0,
+      1e-12)
+      << "the handle is where the run left the gripper";
+
+  QSignalSpy frames(live(), &LiveDrag::frameShown);
+  const Eigen::Vector3d by(0.02, -0.01, 0.04);
+  emit live()->handles()->started(0);
+  ASSERT_TRUE(live()->isDragging());
+  for (int f = 1; f <= 40; ++f) {
+    live()->handles()->setPosition(0, start + by * (f / 40.0));
+    emit live()->handles()->dragged(0);
+    ASSERT_EQ(frames.count(), f);
+    const auto frame = frames.last().at(0).value<DragFrame>();
+    ASSERT_TRUE(std::isfinite(frame.residual_ratio)) << "frame " << f;
+    EXPECT_LE(frame.residual_ratio, 1e-2) << "frame " << f;
+    // The fabric is where the frame says the gripper went.
+    const ShellState* state = live()->draggedState();
+    ASSERT_NE(state, nullptr);
+    EXPECT_NEAR((state->positions.row(corner).transpose() - start - frame.offset).norm(), 0, 1e-12);
+  }
+  EXPECT_NEAR((live()->lastFrame()->offset - by).norm(), 0, 1e-9) << "caught up with the handle";
+
+  const ShellState last_frame = *live()->draggedState();
+  QSignalSpy finished(window_->runMonitor(), &RunMonitor::finished);
+  emit live()->handles()->released(0);
+  ASSERT_TRUE(finished.wait(120000)) << "the release starts the full solve";
+  const Scene& edited = window_->document()->scene();
+  ASSERT_EQ(edited.stages.size(), 2u);
+  EXPECT_EQ(edited.stages.back().name, "drag corner");
+  EXPECT_TRUE(window_->document()->undoStack()->canUndo());
+
+  const auto& line = std::get<LinePath>(edited.stages.back().moves.at(0).path);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(line.by[k], by[k], 1e-12);
+
+  // The released state is a plain run of the edited scene (the scene file
+  // read again, the drag added as `drape drag` adds it).
+  const Scene plain_scene = DraggedScene(ReadScene(CornerLift()), "corner", by);
+  ShellSolver plain(plain_scene, SolverOptions::FromScene(plain_scene.solver));
+  ASSERT_TRUE(plain.Solve({}).IsComplete());
+  ASSERT_GT(window_->stepCount(), 0);
+  const ShellState& released = window_->step(window_->stepCount()).state;
+  EXPECT_LE((released.positions - plain.state().positions).rowwise().norm().maxCoeff(),
+            1e-6 * kSize);
+  // And the last frame, a few corrections from equilibrium, was close to it.
+  const double preview_error =
+      (released.positions - last_frame.positions).rowwise().norm().maxCoeff();
+  std::printf("last frame to released: %.3g m\n", preview_error);
+  EXPECT_LE(preview_error, 1e-3 * kSize);
+  QTest::qWait(20);
+  EXPECT_EQ(live()->handles()->count(), 1) << "the new end can be dragged again";
+}
+
+TEST_F(LiveDragTest, AClickWithoutADragAndAnEarlierStepLeaveTheSceneAlone) {
+  const Scene before = window_->document()->scene();
+  emit live()->handles()->started(0);
+  emit live()->handles()->released(0);
+  QTest::qWait(20);
+  EXPECT_EQ(window_->document()->scene(), before);
+  EXPECT_FALSE(window_->document()->undoStack()->canUndo());
+  window_->showStep(1);
+  EXPECT_EQ(live()->handles()->count(), 0) << "only the run's end can be dragged";
+  window_->showStep(window_->stepCount());
+  EXPECT_EQ(live()->handles()->count(), 1);
+  window_->tree()->setCurrentItem(window_->tree()->item(ModelTree::Part::kFabric));
+  QTest::qWait(20);
+  EXPECT_EQ(live()->handles()->count(), 0) << "nor without the grippers' editor";
+}
+
+}  // namespace
+}  // namespace drape
