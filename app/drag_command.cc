@@ -124,7 +124,6 @@ int RunDrag(const DragArgs& args) {
   std::unique_ptr<GripperDrag> drag;
   try {
     DragSettings settings;
-    settings.tolerance = options.tolerance;
     drag = std::make_unique<GripperDrag>(solver->BasisForDrag(args.gripper), settings);
   } catch (const std::invalid_argument& e) {
     std::cerr << command << ": --gripper: " << e.what() << "\n";

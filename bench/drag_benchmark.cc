@@ -37,7 +37,6 @@ void BM_DragFrame(benchmark::State& bench, const DragCase& c) {
     return;
   }
   DragSettings settings;
-  settings.tolerance = options.tolerance;
   GripperDrag drag(solver.BasisForDrag(c.gripper), settings);
   int frame = 0;
   double worst = 0, corrections = 0, factorizations = 0;

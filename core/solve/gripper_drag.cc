@@ -98,7 +98,7 @@ double GripperDrag::Correct(DragFrame& frame) {
     ++frame.corrections;
     const double last = ratio;
     ratio = Residual(/*fresh=*/false, residual, frame);
-      // Slow: the tangent has gone stale. Assemble it here, factorise, go on.
+    // Slow: the tangent has gone stale. Assemble it here, factorise, go on.
     if (!done() && ratio > settings_.contraction * last)
       ratio = Residual(/*fresh=*/true, residual, frame);
   }
@@ -112,24 +112,33 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
 #endif
   DragFrame frame;
   frame.frame = ++frames_;
-  const ShellState before = basis_.state;
-  Eigen::Vector3d motion = offset - offset_;
-  for (int attempt = 0;; ++attempt) {
-    const double reached = Predict(motion, frame);
-    frame.residual_ratio = Correct(frame);
-    if (IsFinite(basis_.state) && frame.residual_ratio <= settings_.worst_ratio) {
-      offset_ += reached * motion;
-      break;
+  const Eigen::Vector3d motion = offset - offset_;
+  // The motion in sub-steps: whole if it can, else halves, quarters, …
+  // (growing back after a success), until it is all taken or the sub-steps
+  // run out; then the gripper lags the handle and the next frame catches up.
+  double taken = 0, share = 1;
+  bool moved = false;
+  for (int substep = 0; substep < settings_.max_substeps && taken < 1; ++substep) {
+    const double part = std::min(share, 1 - taken);
+    const ShellState kept = basis_.state;
+    const double reached = Predict(part * motion, frame);
+    const double ratio = Correct(frame);
+    if (IsFinite(basis_.state) && ratio <= settings_.worst_ratio) {
+      taken += reached * part;
+      offset_ += reached * part * motion;
+      frame.residual_ratio = ratio;
+      moved = true;
+      if (reached < 1) break;  // the layers are in the way
+      share = std::min(1.0, 2 * share);
+      continue;
     }
-    // Too far for the frame's corrections: the gripper lags behind the
-    // handle by half the motion, and the next frame catches up.
-    basis_.state = before;
-    motion /= 2;
-    if (attempt == settings_.max_halvings) {
-      Eigen::VectorXd residual;
-      frame.residual_ratio = Residual(/*fresh=*/true, residual, frame);
-      break;
-    }
+    basis_.state = kept;
+    share /= 2;
+    if (share < std::ldexp(1.0, -settings_.max_halvings)) break;
+  }
+  if (!moved) {
+    Eigen::VectorXd residual;
+    frame.residual_ratio = Residual(/*fresh=*/true, residual, frame);
   }
   if (basis_.contact) basis_.contact->Commit(basis_.state);
   frame.offset = offset_;

@@ -7,6 +7,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -22,6 +23,7 @@
 #include "ui/widgets/live_drag.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/model_tree.h"
+#include "ui/widgets/path_handles.h"
 #include "ui/widgets/run_monitor.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/view_controller.h"
@@ -131,6 +133,51 @@ TEST_F(LiveDragTest, AClickWithoutADragAndAnEarlierStepLeaveTheSceneAlone) {
   window_->tree()->setCurrentItem(window_->tree()->item(ModelTree::Part::kFabric));
   QTest::qWait(20);
   EXPECT_EQ(live()->handles()->count(), 0) << "nor without the grippers' editor";
+}
+
+// The strip fold's last move (stage T: the gripper 'end' pulled 1 cm along
+// x) reshaped by its path handle at the run's end: the fabric follows the
+// path's end while the handle moves, and the release is solved in full.
+TEST_F(Widgets, TheFabricFollowsTheEndOfALastMovesPathWhileItsHandleIsDragged) {
+  MainWindow window;
+  window.resize(1000, 700);
+  window.show();
+  ASSERT_TRUE(
+      window.openScene(QString::fromStdString((test::ScenesDir() / "strip-fold.json").string())));
+  QSignalSpy finished(window.runMonitor(), &RunMonitor::finished);
+  window.run();
+  ASSERT_TRUE(finished.wait(120000));
+  window.tree()->setCurrentItem(window.tree()->item(ModelTree::Part::kStages, 2, 0));
+  QTest::qWait(20);
+  LiveDrag* live = window.handles()->liveDrag();
+  const Scene scene = window.document()->scene();
+  const auto& line = std::get<LinePath>(scene.stages[2].moves[0].path);
+  QSignalSpy frames(live, &LiveDrag::frameShown);
+  // The end raised 1 cm in 10 frames, then held there: where a frame's
+  // sub-steps cannot take all of a motion, the gripper lags and catches up
+  // (DragSettings::max_substeps).
+  double last_z = 0;
+  for (int f = 1; f <= 20; ++f) {
+    LinePath longer = line;
+    longer.by[2] += 0.001 * std::min(f, 10);
+    emit window.pathHandles()->previewed(Path{longer});
+    ASSERT_EQ(frames.count(), f);
+    const auto frame = frames.last().at(0).value<DragFrame>();
+    EXPECT_LE(frame.residual_ratio, 1e-2) << "frame " << f;
+    EXPECT_NEAR(frame.offset.head<2>().norm(), 0, 1e-12) << "straight up";
+    EXPECT_GE(frame.offset.z(), last_z) << "frame " << f;
+    EXPECT_LE(frame.offset.z(), 0.001 * std::min(f, 10) + 1e-12) << "frame " << f;
+    last_z = frame.offset.z();
+  }
+  EXPECT_NEAR(last_z, 0.01, 1e-12) << "caught up with the path's end";
+  LinePath released = line;
+  released.by[2] += 0.01;
+  QSignalSpy again(window.runMonitor(), &RunMonitor::finished);
+  emit window.pathHandles()->released(Path{released});
+  ASSERT_TRUE(again.wait(120000)) << "the followed drag is solved in full";
+  EXPECT_FALSE(live->isDragging());
+  EXPECT_EQ(std::get<LinePath>(window.document()->scene().stages[2].moves[0].path), released);
+  EXPECT_GT(window.stepCount(), 0);
 }
 
 }  // namespace

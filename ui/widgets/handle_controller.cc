@@ -6,6 +6,7 @@
 
 #include "core/model/obstacle_anchor.h"
 #include "core/solve/path_handles.h"
+#include "core/solve/prescribed_motion.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/live_drag.h"
 #include "ui/widgets/path_handles.h"
@@ -14,6 +15,17 @@
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
+namespace {
+
+// No later stage carries the gripper on: where this move ends, the run ends.
+bool IsLastMoveOf(const Scene& scene, const CarriedMove& m) {
+  for (size_t s = m.stage + 1; s < scene.stages.size(); ++s)
+    for (const Move& later : scene.stages[s].moves)
+      if (later.gripper == m.carried) return false;
+  return true;
+}
+
+}  // namespace
 
 HandleController::HandleController(VtkViewport* viewport,
                                    SceneDocument* document,
@@ -22,7 +34,7 @@ HandleController::HandleController(VtkViewport* viewport,
     : QObject(parent), viewport_(viewport), document_(document), view_(view) {
   path_ = new PathHandles(viewport_->interactor(), this);
   connect(path_, &PathHandles::released, this, &HandleController::OnPathDragged);
-  connect(path_, &PathHandles::previewed, this, [this] { viewport_->requestRender(); });
+  connect(path_, &PathHandles::previewed, this, &HandleController::OnPathPreviewed);
   obstacle_ = new DragHandles(viewport_->interactor(), this);
   connect(obstacle_, &DragHandles::released, this, &HandleController::OnObstacleDragged);
   connect(obstacle_, &DragHandles::dragged, this, [this] { viewport_->requestRender(); });
@@ -118,16 +130,38 @@ void HandleController::OnObstacleDragged() {
   ApplyAfterDrag("move " + QString::fromStdString(o.name), after);
 }
 
+// While the path of a gripper's last move is dragged at the run's end, the
+// fabric follows the gripper to where the path now ends.
+void HandleController::OnPathPreviewed(const Path& path) {
+  viewport_->requestRender();
+  const Scene& scene = document_->scene();
+  if (!live_->canDrag(scene) || view_->stepCount() == 0 ||
+      view_->currentStep() != view_->stepCount() || !view_->model())
+    return;
+  for (const CarriedMove& m : GripperMoves(scene, *view_->model()))
+    if (m.stage == stage_ && m.move == move_ && IsLastMoveOf(scene, m)) {
+      const Path& before = scene.stages[m.stage].moves[m.move].path;
+      live_->follow(view_->renderer(),
+                    m.carried,
+                    MotionAt(path, 1).Apply(m.start) - MotionAt(before, 1).Apply(m.start));
+    }
+}
+
 void HandleController::OnPathDragged(const Path& path) {
+  // A drag the fabric followed live is solved in full when let go.
+  const bool followed = live_->isDragging();
+  live_->stop();
   Scene after = document_->scene();
   if (stage_ < 0 || stage_ >= static_cast<int>(after.stages.size()) || move_ < 0 ||
       move_ >= static_cast<int>(after.stages[stage_].moves.size()))
     return;
   Move& move = after.stages[stage_].moves[move_];
   move.path = path;
-  ApplyAfterDrag("drag the path of " +
-                     QString::fromStdString(move.gripper.empty() ? move.obstacle : move.gripper),
-                 after);
+  ApplyAfterDrag(
+      "drag the path of " +
+          QString::fromStdString(move.gripper.empty() ? move.obstacle : move.gripper),
+      after,
+      followed ? std::function<void()>([this] { emit gripperDragApplied(); }) : nullptr);
 }
 
 // Applied once VTK has finished with the drag's events: the edit remakes

@@ -69,6 +69,7 @@ class HandleController : public QObject {
   void gripperDragApplied();
 
  private:
+  void OnPathPreviewed(const Path& path);
   void OnPathDragged(const Path& path);
   void OnObstacleDragged();
   // `applied` runs once the edit is accepted.

@@ -83,41 +83,62 @@ void LiveDrag::clear() {
   renderer_ = nullptr;
 }
 
-void LiveDrag::OnStarted(int handle) {
-  if (handle < 0 || handle >= static_cast<int>(names_.size()) || !solver_) return;
+bool LiveDrag::Begin(const std::string& name) {
+  if (!solver_) return false;
   try {
     DragSettings settings;
-    settings.tolerance = SolverOptions::FromScene(solved_.solver).tolerance;
     settings.threads = 1;  // the GUI thread's frames: see DragSettings::threads
-    drag_ = std::make_unique<GripperDrag>(solver_->BasisForDrag(names_[handle]), settings);
-    dragged_ = handle;
+    drag_ = std::make_unique<GripperDrag>(solver_->BasisForDrag(name), settings);
+    gripper_ = name;
     last_.reset();
+    return true;
   } catch (const std::invalid_argument& e) {
-    emit message(
-        QString("cannot drag '%1': %2").arg(QString::fromStdString(names_[handle]), e.what()));
+    emit message(QString("cannot drag '%1': %2").arg(QString::fromStdString(name), e.what()));
+    return false;
   }
 }
 
-void LiveDrag::OnDragged(int handle) {
-  if (!drag_ || handle != dragged_) return;
-  last_ = drag_->MoveTo(handles_->position(handle) - starts_[handle]);
-  if (renderer_) {
+void LiveDrag::ShowFrame(FrameRenderer* renderer, const Eigen::Vector3d& offset) {
+  last_ = drag_->MoveTo(offset);
+  if (renderer) {
     Frame frame;
     frame.state = &drag_->state();
-    frame.stage_name = "drag " + names_[handle];
+    frame.stage_name = "drag " + gripper_;
     frame.lambda = 1;
-    renderer_->Update(frame);
+    renderer->Update(frame);
     viewport_->requestRender();
   }
   emit frameShown(*last_);
+}
+
+void LiveDrag::OnStarted(int handle) {
+  if (handle < 0 || handle >= static_cast<int>(names_.size())) return;
+  if (Begin(names_[handle])) dragged_ = handle;
+}
+
+void LiveDrag::OnDragged(int handle) {
+  if (drag_ && handle == dragged_)
+    ShowFrame(renderer_, handles_->position(handle) - starts_[handle]);
+}
+
+void LiveDrag::follow(FrameRenderer* renderer,
+                      const std::string& name,
+                      const Eigen::Vector3d& offset) {
+  if ((!drag_ || gripper_ != name) && !Begin(name)) return;
+  dragged_ = -1;
+  ShowFrame(renderer, offset);
+}
+
+void LiveDrag::stop() {
+  drag_.reset();
+  dragged_ = -1;
 }
 
 void LiveDrag::OnReleased(int handle) {
   if (!drag_ || handle != dragged_) return;
   const Eigen::Vector3d by = handles_->position(handle) - starts_[handle];
   const std::string name = names_[handle];
-  drag_.reset();
-  dragged_ = -1;
+  stop();
   // A click without a drag is no edit.
   if (by.norm() <= 1e-9 * solver_->model().characteristic_length) return;
   emit released(QString("drag %1 by %2").arg(QString::fromStdString(name), Offset(by)),

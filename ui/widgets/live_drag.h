@@ -41,6 +41,13 @@ class LiveDrag : public QObject {
   void show(FrameRenderer* renderer);
   void clear();
 
+  // A path handle's drag: the gripper `name` carried by `offset` from the
+  // run's end (where the edited path now ends against where it ended),
+  // drawn in `renderer`; the drag begins on the first call.
+  void follow(FrameRenderer* renderer, const std::string& name, const Eigen::Vector3d& offset);
+  // The drag under way ends (its handle or path let go) without an edit.
+  void stop();
+
   DragHandles* handles() const { return handles_; }
   // The grippers with handles, in the handles' order.
   const std::vector<std::string>& grippers() const { return names_; }
@@ -60,6 +67,9 @@ class LiveDrag : public QObject {
   void OnStarted(int handle);
   void OnDragged(int handle);
   void OnReleased(int handle);
+  // Starts a drag of gripper `name`; false (and a message) when it cannot.
+  bool Begin(const std::string& name);
+  void ShowFrame(FrameRenderer* renderer, const Eigen::Vector3d& offset);
 
   VtkViewport* viewport_;
   DragHandles* handles_;
@@ -69,7 +79,8 @@ class LiveDrag : public QObject {
   std::vector<std::string> names_;
   std::vector<Eigen::Vector3d> starts_;  // each handle where the run left it
   std::unique_ptr<GripperDrag> drag_;
-  int dragged_ = -1;  // the handle being dragged
+  int dragged_ = -1;     // the handle being dragged (-1: none, or a path's)
+  std::string gripper_;  // the gripper being dragged
   std::optional<DragFrame> last_;
 };
 
