@@ -157,11 +157,10 @@ void HandleController::OnPathDragged(const Path& path) {
     return;
   Move& move = after.stages[stage_].moves[move_];
   move.path = path;
-  ApplyAfterDrag(
-      "drag the path of " +
-          QString::fromStdString(move.gripper.empty() ? move.obstacle : move.gripper),
-      after,
-      followed ? std::function<void()>([this] { emit gripperDragApplied(); }) : nullptr);
+  ApplyAfterDrag("drag the path of " +
+                     QString::fromStdString(move.gripper.empty() ? move.obstacle : move.gripper),
+                 after,
+                 followed ? std::function<void()>([this] { emit gripperDragApplied(); }) : nullptr);
 }
 
 // Applied once VTK has finished with the drag's events: the edit remakes
