@@ -69,20 +69,10 @@ void SceneDocument::openTemplate(const QString& file) {
 }
 
 void SceneDocument::saveAs(const QString& file) {
-  Scene out = scene_;
-  if (!origin_.isEmpty() && QFileInfo(file).absolutePath() != origin_) {
-    const std::filesystem::path from = origin_.toStdString();
-    auto absolute = [&](std::string& reference) {
-      if (!reference.empty() && std::filesystem::path(reference).is_relative())
-        reference = std::filesystem::absolute(from / reference).lexically_normal().string();
-    };
-    for (BendingLaw* law : {&out.material.bending.warp,
-                            out.material.bending.weft ? &*out.material.bending.weft : nullptr})
-      if (law)
-        if (auto* curve = std::get_if<CurveBending>(law)) absolute(curve->file);
-    for (Obstacle& o : out.obstacles)
-      if (auto* mesh = std::get_if<MeshShape>(&o.shape)) absolute(mesh->file);
-  }
+  // Saved into another folder, relative references would no longer resolve.
+  const Scene out = !origin_.isEmpty() && QFileInfo(file).absolutePath() != origin_
+                        ? WithAbsoluteReferences(scene_, origin_.toStdString())
+                        : scene_;
   WriteScene(out, file.toStdString());
   scene_ = out;
   file_ = file;
