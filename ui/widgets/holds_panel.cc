@@ -1,7 +1,6 @@
 #include "ui/widgets/holds_panel.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -86,6 +85,7 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
     if (i < 0 || i >= static_cast<int>(holds.size())) return;
     const QSignalBlocker block(fixity_);
     fixity_->setCurrentIndex(holds[i].fixity == Fixity::kClamp ? 1 : 0);
+    rule_->show(holds[i].select);
   });
   connect(document_, &SceneDocument::changed, this, &HoldsPanel::refresh);
   refresh();
@@ -135,7 +135,7 @@ bool HoldsPanel::AddHold(const Selection& selection, int fixity) {
   SetHolds(after, role_, holds);
   if (!Apply(QString("add %1 (%2)")
                  .arg(QString::fromStdString(h.name))
-                 .arg(DescribeSelection(selection)),
+                 .arg(DescribeSelection(selection, units_)),
              after))
     return false;
   list_->setCurrentRow(list_->count() - 1);
@@ -167,7 +167,7 @@ bool HoldsPanel::holdPicked() {
   SetHolds(after, role_, holds);
   return Apply(QString("%1 holds %2")
                    .arg(QString::fromStdString(holds[i].name))
-                   .arg(DescribeSelection(*picked)),
+                   .arg(DescribeSelection(*picked, units_)),
                after);
 }
 
@@ -191,14 +191,21 @@ void HoldsPanel::refresh() {
   for (const Hold& h : holds)
     list_->addItem(QString("%1: %2, %3")
                        .arg(QString::fromStdString(h.name))
-                       .arg(DescribeSelection(h.select))
+                       .arg(DescribeSelection(h.select, units_))
                        .arg(h.fixity == Fixity::kClamp ? "clamped" : "pinned"));
   if (!holds.empty()) {
     const int i = std::clamp(row, 0, static_cast<int>(holds.size()) - 1);
     list_->setCurrentRow(i);
     fixity_->setCurrentIndex(holds[i].fixity == Fixity::kClamp ? 1 : 0);
+    rule_->show(holds[i].select);
   }
   refreshing_ = false;
+}
+
+void HoldsPanel::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  rule_->setUnitSystem(system);
+  refresh();
 }
 
 }  // namespace drape

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 
 class QComboBox;
 class QLabel;
@@ -31,6 +32,7 @@ class HoldsPanel : public QWidget {
   HoldsPanel(Role role, SceneDocument* document, QWidget* parent = nullptr);
 
   QListWidget* list() const { return list_; }
+  SelectionRuleEditor* rule() const { return rule_; }
   QString message() const;
 
   // rule: "left", "right", "bottom", "top" (an edge), "corners", "point"
@@ -46,6 +48,8 @@ class HoldsPanel : public QWidget {
 
  public slots:
   void refresh();
+  // Coordinates shown in `system`'s unit of length (typing takes any unit).
+  void setUnitSystem(UnitSystem system);
   // The nodes picked in the viewport and their reference (x, y) [m].
   void setPickedNodes(const std::vector<int>& nodes, const std::vector<std::array<double, 2>>& at);
 
@@ -60,6 +64,7 @@ class HoldsPanel : public QWidget {
   QComboBox* fixity_;
   QLabel* message_;
   bool refreshing_ = false;
+  UnitSystem units_ = UnitSystem::kSI;
 };
 
 }  // namespace drape

@@ -120,6 +120,7 @@ bool LoadsPanel::removeSelected() {
 
 void LoadsPanel::setUnitSystem(UnitSystem system) {
   units_ = system;
+  rule_->setUnitSystem(system);
   refresh();
 }
 
@@ -133,7 +134,7 @@ void LoadsPanel::refresh() {
       list_->addItem(
           QString("%1: (%2) on %3")
               .arg(QString::fromStdString(l.name), ListText(l.force, Measure::kForce, units_))
-              .arg(DescribeSelection(l.select)));
+              .arg(DescribeSelection(l.select, units_)));
     if (!s.loads.empty())
       list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.loads.size()) - 1));
   }

@@ -227,6 +227,11 @@ void MainWindow::OnAccepted(bool renumbered, bool edited) {
 void MainWindow::ShowUnits(UnitSystem system) {
   properties_->setUnitSystem(system);
   loads_->setUnitSystem(system);
+  supports_->setUnitSystem(system);
+  grippers_->setUnitSystem(system);
+  probes_->setUnitSystem(system);
+  obstacles_->setUnitSystem(system);
+  tree_->setUnitSystem(system);
   stages_->moves()->setUnitSystem(system);
   monitor_->probePlot()->setUnitSystem(system);
   monitor_->reactionPlot()->setUnitSystem(system);

@@ -5,6 +5,8 @@
 #include "core/model/overloaded.h"
 #include "core/model/scene.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/selection_rule.h"
+#include "ui/widgets/typed_json.h"
 
 namespace drape {
 namespace {
@@ -24,12 +26,21 @@ QTreeWidgetItem* Add(QTreeWidgetItem* parent,
   return item;
 }
 
-QString OutlineSummary(const Fabric& f) {
+QString Shown(double si, Measure measure, UnitSystem system) {
+  return QString::fromStdString(FormatQuantity(si, measure, system));
+}
+
+QString OutlineSummary(const Fabric& f, UnitSystem system) {
   return std::visit(
-      Overloaded{[](const RectangleOutline& r) {
-                   return QString("rectangle %1 × %2 m").arg(r.size[0]).arg(r.size[1]);
+      Overloaded{[&](const RectangleOutline& r) {
+                   return QString("rectangle %1 × %2")
+                       .arg(QString::fromStdString(
+                                FormatNumber(r.size[0], UnitFor(Measure::kLength, system))),
+                            Shown(r.size[1], Measure::kLength, system));
                  },
-                 [](const DiskOutline& d) { return QString("disk r = %1 m").arg(d.radius); },
+                 [&](const DiskOutline& d) {
+                   return QString("disk r = %1").arg(Shown(d.radius, Measure::kLength, system));
+                 },
                  [](const PolygonOutline& p) {
                    return QString("polygon, %1 vertices").arg(p.vertices.size());
                  }},
@@ -70,38 +81,44 @@ QTreeWidgetItem* ModelTree::item(Part part, int index, int move) const {
   return nullptr;
 }
 
+void ModelTree::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  refresh();
+}
+
 void ModelTree::refresh() {
   const Scene& s = document_->scene();
   const QSignalBlocker block(this);  // rebuilding is not a choice
   clear();
   auto* root = invisibleRootItem();
-  Add(root, "Fabric", OutlineSummary(s.fabric), Part::kFabric);
+  Add(root, "Fabric", OutlineSummary(s.fabric, units_), Part::kFabric);
   Add(root,
       "Material",
-      QString("h = %1 mm, w = %2 Pa").arg(s.material.thickness * 1e3).arg(s.material.areal_weight),
+      QString("h = %1, w = %2")
+          .arg(Shown(s.material.thickness, Measure::kThickness, units_),
+               Shown(s.material.areal_weight, Measure::kArealWeight, units_)),
       Part::kMaterial);
   auto* supports = Add(root, "Supports", QString::number(s.supports.size()), Part::kSupports);
   for (size_t i = 0; i < s.supports.size(); ++i)
     Add(supports,
         QString::fromStdString(s.supports[i].name),
-        ToString(s.supports[i].fix),
+        QString("%1, %2").arg(DescribeSelection(s.supports[i].select, units_),
+                              ToString(s.supports[i].fix)),
         Part::kSupports,
         static_cast<int>(i));
   auto* grippers = Add(root, "Grippers", QString::number(s.grippers.size()), Part::kGrippers);
   for (size_t i = 0; i < s.grippers.size(); ++i)
     Add(grippers,
         QString::fromStdString(s.grippers[i].name),
-        ToString(s.grippers[i].hold),
+        QString("%1, %2").arg(DescribeSelection(s.grippers[i].select, units_),
+                              ToString(s.grippers[i].hold)),
         Part::kGrippers,
         static_cast<int>(i));
   auto* loads = Add(root, "Loads", QString::number(s.loads.size()), Part::kLoads);
   for (size_t i = 0; i < s.loads.size(); ++i)
     Add(loads,
         QString::fromStdString(s.loads[i].name),
-        QString("(%1, %2, %3) N")
-            .arg(s.loads[i].force[0])
-            .arg(s.loads[i].force[1])
-            .arg(s.loads[i].force[2]),
+        QString("(%1)").arg(ListText(s.loads[i].force, Measure::kForce, units_)),
         Part::kLoads,
         static_cast<int>(i));
   auto* obstacles = Add(root, "Obstacles", QString::number(s.obstacles.size()), Part::kObstacles);
@@ -130,7 +147,11 @@ void ModelTree::refresh() {
   }
   auto* probes = Add(root, "Probes", QString::number(s.probes.size()), Part::kProbes);
   for (size_t i = 0; i < s.probes.size(); ++i)
-    Add(probes, QString::fromStdString(s.probes[i].name), {}, Part::kProbes, static_cast<int>(i));
+    Add(probes,
+        QString::fromStdString(s.probes[i].name),
+        QString("(%1)").arg(ListText(s.probes[i].at, units_)),
+        Part::kProbes,
+        static_cast<int>(i));
   Add(root,
       "Solver",
       QString("tolerance %1, N_p %2").arg(s.solver.tolerance).arg(s.solver.target_iterations),

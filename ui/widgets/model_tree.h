@@ -1,10 +1,13 @@
 // The scene as a tree: fabric, material, supports, grippers, loads, obstacles,
-// stages with their moves, probes and solver, each with a one-line summary.
+// stages with their moves, probes and solver, each with a one-line summary
+// ("rectangle 20 × 20 cm") in the unit system chosen.
 // Choosing an item says which part of the scene to edit; the main window
 // shows its editor.
 #pragma once
 
 #include <QTreeWidget>
+
+#include "core/model/unit_system.h"
 
 namespace drape {
 
@@ -32,6 +35,8 @@ class ModelTree : public QTreeWidget {
 
  public slots:
   void refresh();
+  // Summaries in `system`'s units.
+  void setUnitSystem(UnitSystem system);
 
  signals:
   void chosen(drape::ModelTree::Part part, int index, int move);
@@ -39,6 +44,7 @@ class ModelTree : public QTreeWidget {
 
  private:
   SceneDocument* document_;
+  UnitSystem units_ = UnitSystem::kSI;
 };
 
 }  // namespace drape

@@ -169,16 +169,25 @@ void ObstaclesPanel::refresh() {
   text_->setPlainText(i >= 0 ? QString::fromStdString(FormatJson(SceneToJson(s)["obstacles"][i]))
                              : QString());
   text_->setEnabled(i >= 0);
-  const Contact contact = s.contact.value_or(Contact{});
-  penalty_shown_ = contact.penalty ? QString("%1 N/m^3").arg(*contact.penalty) : "auto";
+  ShowContact();
+  emit obstacleSelected(i);
+}
+
+void ObstaclesPanel::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  ShowContact();
+}
+
+void ObstaclesPanel::ShowContact() {
+  const Contact contact = document_->scene().contact.value_or(Contact{});
+  penalty_shown_ = contact.penalty
+                       ? QuantityText(*contact.penalty, Measure::kPenaltyPerArea, units_)
+                       : QString("auto");
   friction_shown_ = QString::number(contact.friction);
   penalty_->setText(penalty_shown_);
   friction_->setText(friction_shown_);
-  {
-    const QSignalBlocker block(self_);
-    self_->setChecked(contact.self);
-  }
-  emit obstacleSelected(i);
+  const QSignalBlocker block(self_);
+  self_->setChecked(contact.self);
 }
 
 }  // namespace drape

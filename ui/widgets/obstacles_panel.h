@@ -7,6 +7,8 @@
 
 #include <QWidget>
 
+#include "core/model/unit_system.h"
+
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -39,15 +41,20 @@ class ObstaclesPanel : public QWidget {
   // Whether the fabric's layers are kept a thickness apart (contact.self).
   bool setSelfContact(bool on);
   QCheckBox* selfContact() const { return self_; }
+  QLineEdit* penalty() const { return penalty_; }
 
  public slots:
   void refresh();
+  // The contact penalty shown in `system`'s units (typing takes any unit);
+  // the obstacle's JSON stays as the scene file writes it (SI).
+  void setUnitSystem(UnitSystem system);
 
  signals:
   void obstacleSelected(int index);  // -1: none
 
  private:
   bool Apply(const QString& what, const Scene& after);
+  void ShowContact();
 
   SceneDocument* document_;
   QListWidget* list_;
@@ -57,6 +64,7 @@ class ObstaclesPanel : public QWidget {
   QCheckBox* self_;
   QString penalty_shown_, friction_shown_;  // as refresh() wrote them
   QLabel* message_;
+  UnitSystem units_ = UnitSystem::kSI;
 };
 
 }  // namespace drape

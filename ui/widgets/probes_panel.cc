@@ -14,6 +14,7 @@
 #include "core/model/units.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/typed_json.h"
 
 namespace drape {
 
@@ -38,11 +39,9 @@ ProbesPanel::ProbesPanel(SceneDocument* document, QWidget* parent)
   message_ = MakeMessageLabel(this);
   layout->addWidget(message_);
   connect(add, &QPushButton::clicked, this, [this] {
-    const QStringList parts = at_->text().split(',');
     try {
-      if (parts.size() != 2) throw UnitError("give two coordinates, x, y");
-      this->add(ParseQuantityAs(parts[0].trimmed().toStdString(), dim::kLength),
-                ParseQuantityAs(parts[1].trimmed().toStdString(), dim::kLength));
+      const Vec2 at = TypedPoint(at_->text());
+      this->add(at[0], at[1]);
     } catch (const UnitError& e) {
       message_->setText(QString("at: %1").arg(e.what()));
     }
@@ -73,7 +72,7 @@ bool ProbesPanel::Apply(const QString& what, const Scene& after) {
 bool ProbesPanel::add(double x, double y) {
   Scene after = document_->scene();
   after.probes.push_back({FreeName("probe", after.probes), {x, y}});
-  if (!Apply(QString("add a probe at (%1, %2) m").arg(x).arg(y), after)) return false;
+  if (!Apply(QString("add a probe at (%1)").arg(ListText(Vec2{x, y}, units_)), after)) return false;
   list_->setCurrentRow(list_->count() - 1);
   return true;
 }
@@ -94,9 +93,20 @@ void ProbesPanel::refresh() {
   list_->clear();
   for (const Probe& p : s.probes)
     list_->addItem(
-        QString("%1 at (%2, %3) m").arg(QString::fromStdString(p.name)).arg(p.at[0]).arg(p.at[1]));
+        QString("%1 at (%2)").arg(QString::fromStdString(p.name), ListText(p.at, units_)));
   if (!s.probes.empty())
     list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.probes.size()) - 1));
+}
+
+void ProbesPanel::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  // Coordinates being typed are shown in the new unit too; text that does
+  // not read stays as typed (Add says what is wrong).
+  try {
+    at_->setText(ListText(TypedPoint(at_->text()), units_));
+  } catch (const UnitError&) {
+  }
+  refresh();
 }
 
 }  // namespace drape

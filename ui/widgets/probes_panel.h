@@ -9,6 +9,8 @@
 #include <array>
 #include <vector>
 
+#include "core/model/unit_system.h"
+
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -24,6 +26,7 @@ class ProbesPanel : public QWidget {
   explicit ProbesPanel(SceneDocument* document, QWidget* parent = nullptr);
 
   QListWidget* list() const { return list_; }
+  QLineEdit* at() const { return at_; }
   QString message() const;
 
   // A probe at reference (x, y) [m].
@@ -32,6 +35,8 @@ class ProbesPanel : public QWidget {
 
  public slots:
   void refresh();
+  // Positions shown in `system`'s unit of length (typing takes any unit).
+  void setUnitSystem(UnitSystem system);
   // Reference positions of the picked nodes: "Add at picked" uses the last.
   void setPicked(const std::vector<std::array<double, 2>>& at);
 
@@ -43,6 +48,7 @@ class ProbesPanel : public QWidget {
   QLineEdit* at_;
   QLabel* message_;
   std::vector<std::array<double, 2>> picked_;
+  UnitSystem units_ = UnitSystem::kSI;
 };
 
 }  // namespace drape

@@ -1,22 +1,30 @@
 #include "ui/widgets/selection_rule.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
 
 #include "core/model/overloaded.h"
+#include "core/model/units.h"
+#include "ui/widgets/typed_json.h"
 
 namespace drape {
 
-QString DescribeSelection(const Selection& selection) {
+QString DescribeSelection(const Selection& selection, UnitSystem system) {
   return std::visit(
       Overloaded{
-          [](const PointSelection& p) {
-            return QString("point (%1, %2) m").arg(p.at[0]).arg(p.at[1]);
+          [&](const PointSelection& p) {
+            return QString("point (%1)").arg(ListText(p.at, system));
           },
-          [](const LineSelection&) { return QString("line"); },
-          [](const BoxSelection&) { return QString("box"); },
+          [&](const LineSelection& l) {
+            return QString("line (%1) to (%2)")
+                .arg(ListText(l.from, system), ListText(l.to, system));
+          },
+          [&](const BoxSelection& b) {
+            return QString("box (%1) to (%2)")
+                .arg(ListText(b.min, system), ListText(b.max, system));
+          },
           [](const CornersSelection&) { return QString("corners"); },
           [](const EdgeSelection& e) {
             const char* names[] = {
@@ -35,18 +43,37 @@ SelectionRuleEditor::SelectionRuleEditor(QFormLayout* form, const QString& label
   rule_->setToolTip(
       "an edge, the corners, the node nearest a point, or the nodes picked in the "
       "view (Pick nodes, then click the fabric)");
-  x_ = new QDoubleSpinBox(parent);
-  y_ = new QDoubleSpinBox(parent);
-  for (QDoubleSpinBox* s : {x_, y_}) {
-    s->setRange(-100, 100);
-    s->setDecimals(4);
-    s->setSuffix(" m");
-  }
+  point_ = new QLineEdit("0, 0", parent);
+  point_->setPlaceholderText("x, y (e.g. 5 cm, 0)");
+  point_->setToolTip("the point's reference x, y; units allowed (m, cm, in)");
   picked_label_ = new QLabel("no nodes picked", parent);
   form->addRow(label, rule_);
-  form->addRow("point x", x_);
-  form->addRow("point y", y_);
+  form->addRow("point", point_);
   form->addRow("picked", picked_label_);
+}
+
+void SelectionRuleEditor::show(const Selection& selection) {
+  std::visit(Overloaded{
+                 [&](const PointSelection& p) {
+                   rule_->setCurrentText("point");
+                   point_->setText(ListText(p.at, units_));
+                 },
+                 [&](const CornersSelection&) { rule_->setCurrentText("corners"); },
+                 [&](const EdgeSelection& e) {
+                   if (e.side != Side::kBoundary) rule_->setCurrentIndex(static_cast<int>(e.side));
+                 },
+                 [](const auto&) {},
+             },
+             selection.shape);
+}
+
+void SelectionRuleEditor::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  try {
+    point_->setText(ListText(TypedPoint(point_->text()), units_));
+  } catch (const UnitError&) {
+    // Text that does not read stays as typed: Add says what is wrong.
+  }
 }
 
 void SelectionRuleEditor::setPicked(const std::vector<int>& nodes,
@@ -68,7 +95,15 @@ std::optional<Selection> SelectionRuleEditor::picked(QString* problem) const {
 }
 
 std::optional<Selection> SelectionRuleEditor::current(QString* problem) const {
-  return selection(rule_->currentText(), x_->value(), y_->value(), problem);
+  const QString rule = rule_->currentText();
+  if (rule != "point") return selection(rule, 0, 0, problem);
+  try {
+    const Vec2 at = TypedPoint(point_->text());
+    return selection(rule, at[0], at[1], problem);
+  } catch (const UnitError& e) {
+    if (problem) *problem = QString("point: %1").arg(e.what());
+    return std::nullopt;
+  }
 }
 
 std::optional<Selection> SelectionRuleEditor::selection(const QString& rule,

@@ -11,21 +11,23 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 
 class QComboBox;
-class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
+class QLineEdit;
 
 namespace drape {
 
-// "left edge", "corners", "point (0.1, 0) m", "3 nodes".
-QString DescribeSelection(const Selection& selection);
+// "left edge", "corners", "point (10 cm, 0)", "line (0, 0) to (20 cm, 0)",
+// "3 nodes": coordinates in `system`'s unit of length.
+QString DescribeSelection(const Selection& selection, UnitSystem system = UnitSystem::kSI);
 
 class SelectionRuleEditor : public QObject {
   Q_OBJECT
  public:
-  // Adds its rows (rule, point x and y, picked) to `form`.
+  // Adds its rows (rule, point "x, y", picked) to `form`.
   SelectionRuleEditor(QFormLayout* form, const QString& label, QWidget* parent);
 
   // rule: "left", "right", "bottom", "top", "corners", "point" (at x, y
@@ -35,16 +37,26 @@ class SelectionRuleEditor : public QObject {
                                      double x,
                                      double y,
                                      QString* problem) const;
-  // The rule and point the rows show.
+  // The rule and point the rows show; the point is typed "x, y" in any
+  // unit of length the scene reader takes ("2 in, 0"; a plain number is m).
   std::optional<Selection> current(QString* problem) const;
   // The picked nodes as a selection (see the top of this file).
   std::optional<Selection> picked(QString* problem) const;
 
   void setPicked(const std::vector<int>& nodes, const std::vector<std::array<double, 2>>& at);
+  // The rows show `selection` (an edge, the corners, a point; other shapes
+  // leave them as they are).
+  void show(const Selection& selection);
+  // The point shown in `system`'s unit of length (typing takes any unit).
+  void setUnitSystem(UnitSystem system);
+
+  QComboBox* rule() const { return rule_; }
+  QLineEdit* point() const { return point_; }
 
  private:
   QComboBox* rule_;
-  QDoubleSpinBox *x_, *y_;
+  QLineEdit* point_;
+  UnitSystem units_ = UnitSystem::kSI;
   QLabel* picked_label_;
   std::vector<int> picked_;
   std::vector<std::array<double, 2>> picked_at_;

@@ -23,6 +23,19 @@ nlohmann::json TypedLists(const QString& text) {
   return lists;
 }
 
+double TypedMeasure(const QString& text, Measure measure) {
+  bool number = false;
+  const double v = text.trimmed().toDouble(&number);
+  if (number) return v;
+  return ParseMeasure(text.trimmed().toStdString(), measure);
+}
+
+std::array<double, 2> TypedPoint(const QString& text) {
+  const QStringList parts = text.split(',');
+  if (parts.size() != 2) throw UnitError("give two coordinates, x, y");
+  return {TypedMeasure(parts[0], Measure::kLength), TypedMeasure(parts[1], Measure::kLength)};
+}
+
 QString ListText(const std::array<double, 2>& v) {
   return QString("%1, %2").arg(v[0]).arg(v[1]);
 }

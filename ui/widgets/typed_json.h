@@ -17,6 +17,13 @@ nlohmann::json TypedQuantity(const QString& text);
 nlohmann::json TypedList(const QString& text);   // comma separated
 nlohmann::json TypedLists(const QString& text);  // ';' between lists
 
+// Text typed for one value of `measure` to its SI value: a plain number is
+// SI, as the scene reader reads a JSON number; a quantity may be in any
+// unit ParseMeasure takes ("2 in"). Throws UnitError.
+double TypedMeasure(const QString& text, Measure measure);
+// "x, y" lengths typed so ("2 in, 0") to SI. Throws UnitError.
+std::array<double, 2> TypedPoint(const QString& text);
+
 // The other way: SI numbers as a field shows them, "0.1, 0, 0.02".
 QString ListText(const std::array<double, 2>& v);
 QString ListText(const std::array<double, 3>& v);
