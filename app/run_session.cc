@@ -178,7 +178,7 @@ int SolveIntoFolder(const Scene& scene,
     if (!last_probes.empty())
       std::cerr << "  probes at the last step: " << Listed(last_probes, report.units, false)
                 << "\n";
-    if (estimate) std::cerr << "  " << Describe(*estimate) << "\n";
+    if (estimate) std::cerr << "  " << Describe(*estimate, ErrorUnit(report.units)) << "\n";
     std::cerr << "  results: " << (writer->directory() / kResultFileName).string() << "\n";
   }
   return ExitCode(summary.termination);

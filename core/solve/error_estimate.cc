@@ -178,7 +178,7 @@ ErrorEstimate EstimateError(const Scene& written,
   return estimate;
 }
 
-std::string Describe(const ErrorEstimate& e) {
+std::string Describe(const ErrorEstimate& e, const DisplayUnit& unit) {
   std::string meshes = e.meshes[0];
   for (int i = 1; i < 3; ++i)
     if (!e.meshes[i].empty()) meshes += ", " + e.meshes[i];
@@ -187,10 +187,20 @@ std::string Describe(const ErrorEstimate& e) {
   std::snprintf(text, sizeof text, "error estimate (%s): order %.2f", meshes.c_str(), e.order);
   std::string line = text;
   for (const ProbeErrorEstimate& p : e.probes) {
-    std::snprintf(text, sizeof text, "; %s ±%.3g mm", p.name.c_str(), 1e3 * p.error);
+    std::snprintf(text,
+                  sizeof text,
+                  "; %s ±%.3g %s",
+                  p.name.c_str(),
+                  p.error / unit.si_factor,
+                  unit.label.c_str());
     line += text;
   }
   return line;
+}
+
+DisplayUnit ErrorUnit(UnitSystem system) {
+  return system == UnitSystem::kImperial ? UnitFor(Measure::kLength, system)
+                                         : DisplayUnit{"mm", 1e-3};
 }
 
 std::string MeshName(const Scene& scene) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 #include "core/solve/shell_solver.h"
 #include "core/solve/step_state.h"
 
@@ -60,8 +61,12 @@ ErrorEstimate EstimateError(const Scene& scene,
                             CancellationToken* cancel = nullptr);
 
 // One line: "error estimate (80 x 2, 40 x 2, 20 x 2): order 2.01; tip
-// ±0.07 mm, …", or why there is none.
-std::string Describe(const ErrorEstimate& estimate);
+// ±0.07 mm, …", or why there is none; the errors in `unit`.
+std::string Describe(const ErrorEstimate& estimate, const DisplayUnit& unit = {"mm", 1e-3});
+
+// The unit an error of a position is read in: mm in SI and textile units
+// (errors are fractions of a centimetre), in for imperial.
+DisplayUnit ErrorUnit(UnitSystem system);
 
 // "80 x 2" or "size 5 mm".
 std::string MeshName(const Scene& scene);

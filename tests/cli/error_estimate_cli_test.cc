@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -65,6 +66,15 @@ TEST_F(ErrorEstimateCli, AHeavyStripGetsItsProbesErrors) {
   for (const json& x : tip["extrapolated"]) EXPECT_TRUE(std::isfinite(x.get<double>()));
   EXPECT_TRUE(std::isfinite(tip["gci"].get<double>()));
   EXPECT_FALSE(e.contains("reason"));
+
+  // With --units imperial the line gives the same error in inches.
+  const test::CommandResult in =
+      test::RunDrape("run '" + (dir_ / "strip.json").string() + "' -o '" + (dir_ / "in").string() +
+                     "' --error-estimate --units imperial");
+  ASSERT_EQ(in.exit_code, 0) << in.output;
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "; tip ±%.3g in", tip["error"].get<double>() / 0.0254);
+  EXPECT_NE(in.output.find(expected), std::string::npos) << expected << "\n" << in.output;
 }
 
 // The block drape (four pinned corners), asked for by the scene's own

@@ -89,6 +89,22 @@ TEST(Richardson, SaysWhyWhenTheSequenceIsNotAsymptotic) {
   EXPECT_NE(slow.reason.find("observed order of 0.50"), std::string::npos) << slow.reason;
 }
 
+// The line names each probe's error in the unit system's error unit:
+// 0.254 mm is 0.01 in (1 in = 25.4 mm exactly).
+TEST(Richardson, DescribesTheErrorsInTheChosenUnits) {
+  ErrorEstimate e;
+  e.order = 2.01;
+  e.in_asymptotic_range = true;
+  e.meshes = {"8 x 1", "4 x 1", "2 x 1"};
+  e.probes = {{"tip", Eigen::Vector3d::Zero(), 0.254e-3, 1.25 * 0.254e-3}};
+  const std::string si = "error estimate (8 x 1, 4 x 1, 2 x 1): order 2.01; tip ±0.254 mm";
+  EXPECT_EQ(Describe(e), si);
+  EXPECT_EQ(Describe(e, ErrorUnit(UnitSystem::kSI)), si);
+  EXPECT_EQ(Describe(e, ErrorUnit(UnitSystem::kTextile)), si);
+  EXPECT_EQ(Describe(e, ErrorUnit(UnitSystem::kImperial)),
+            "error estimate (8 x 1, 4 x 1, 2 x 1): order 2.01; tip ±0.01 in");
+}
+
 TEST(CoarsenedScene, HalvesEachDirectionThatCanBeHalvedAndKeepsAStripsWidth) {
   Scene scene = test::CantileverStrip({});
   scene.fabric.mesh.elements = std::array<int, 2>{40, 2};

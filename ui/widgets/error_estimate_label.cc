@@ -30,20 +30,30 @@ void ErrorEstimateLabel::showEstimating() {
 
 void ErrorEstimateLabel::showEstimate(const ErrorEstimate& estimate) {
   estimate_ = estimate;
-  const QString line = QString::fromStdString(Describe(estimate));
+  const DisplayUnit unit = ErrorUnit(units_);
+  const QString line = QString::fromStdString(Describe(estimate, unit));
   QString tooltip = line;
   if (estimate.in_asymptotic_range) {
     tooltip += QString("\n\nobserved order %1; per probe:").arg(estimate.order, 0, 'f', 2);
+    const QString label = QString::fromStdString(unit.label);
+    auto in_unit = [&](double si) { return QString::number(si / unit.si_factor, 'g', 3); };
+    auto at = [&](double si) { return QString::number(si / unit.si_factor, 'g', 6); };
     for (const ProbeErrorEstimate& p : estimate.probes)
-      tooltip += QString("\n%1: error %2 mm, GCI ±%3 mm, extrapolated (%4, %5, %6) mm")
-                     .arg(QString::fromStdString(p.name))
-                     .arg(1e3 * p.error, 0, 'g', 3)
-                     .arg(1e3 * p.gci, 0, 'g', 3)
-                     .arg(1e3 * p.extrapolated.x(), 0, 'f', 3)
-                     .arg(1e3 * p.extrapolated.y(), 0, 'f', 3)
-                     .arg(1e3 * p.extrapolated.z(), 0, 'f', 3);
+      tooltip += QString("\n%1: error %2 %3, GCI ±%4 %3, extrapolated (%5, %6, %7) %3")
+                     .arg(QString::fromStdString(p.name),
+                          in_unit(p.error),
+                          label,
+                          in_unit(p.gci),
+                          at(p.extrapolated.x()),
+                          at(p.extrapolated.y()),
+                          at(p.extrapolated.z()));
   }
   Show(line, tooltip);
+}
+
+void ErrorEstimateLabel::setUnitSystem(UnitSystem system) {
+  units_ = system;
+  if (estimate_) showEstimate(*estimate_);
 }
 
 void ErrorEstimateLabel::showStopped() {

@@ -25,6 +25,9 @@ class ErrorEstimateLabel : public QLabel {
   void showEstimating();  // the run is done, the coarse meshes are solving
   void showEstimate(const ErrorEstimate& estimate);
   void showStopped();  // Stop ended the estimate before it was done
+  // The errors in `system`'s error unit (ErrorUnit: mm, or in); the shown
+  // estimate is said again in it.
+  void setUnitSystem(UnitSystem system);
   // The last estimate shown; empty while none came.
   const std::optional<ErrorEstimate>& estimate() const { return estimate_; }
 
@@ -38,6 +41,7 @@ class ErrorEstimateLabel : public QLabel {
   QStatusBar* bar_;
   QString text_;  // before eliding
   std::optional<ErrorEstimate> estimate_;
+  UnitSystem units_ = UnitSystem::kSI;
 };
 
 }  // namespace drape

@@ -84,6 +84,12 @@ void RunMonitor::stepOnce() {
   runs_->stepOnce();
 }
 
+void RunMonitor::setUnitSystem(UnitSystem system) {
+  probe_plot_->setUnitSystem(system);
+  reaction_plot_->setUnitSystem(system);
+  estimate_label_->setUnitSystem(system);
+}
+
 void RunMonitor::stop() {
   runs_->stop();
 }

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/model/scene.h"
+#include "core/model/unit_system.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
 #include "ui/widgets/meta_types.h"
@@ -52,6 +53,8 @@ class RunMonitor : public QObject {
   void pauseOrResume();
   void stepOnce();
   void stop();
+  // The probe and reaction plots and the error estimate in `system`.
+  void setUnitSystem(UnitSystem system);
 
  signals:
   void controlsChanged();  // paused, resumed or estimating: the controls follow
