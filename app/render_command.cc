@@ -59,9 +59,9 @@ struct ViewArgs {
         ->capture_default_str();
     cmd->add_option("--units",
                     units,
-                    "Units of --field's colour bar: si, textile (cm, gf, 1/cm) or imperial (in, "
-                    "oz, 1/in); default the units the scene is written in (SI for a result "
-                    "folder without its scene.json)")
+                    "Units of --field's colour bar and of --plot's forces: si, textile (cm, gf, "
+                    "1/cm) or imperial (in, oz, 1/in); default the units the scene is written "
+                    "in (SI for a result folder without its scene.json)")
         ->check(CLI::IsMember({"si", "textile", "imperial"}));
     cmd->add_option("--camera", camera, "View: iso, front, top or side")->capture_default_str();
     cmd->add_option("--camera-position", position, "Explicit camera position x,y,z [m]")
@@ -96,9 +96,13 @@ struct ViewArgs {
   }
 
   // `input`: the scene or result drawn, whose own units are the default.
+  UnitSystem Units(const fs::path& input) const {
+    return units.empty() ? ScenesOwnUnits(input) : *UnitSystemNamed(units);
+  }
+
   RenderOptions Options(const fs::path& input) const {
     RenderOptions o;
-    o.units = units.empty() ? ScenesOwnUnits(input) : *UnitSystemNamed(units);
+    o.units = Units(input);
     std::tie(o.width, o.height) = ParseSize(size);
     if (!field.empty()) {
       const auto f = FindField(field);
@@ -240,6 +244,7 @@ int RunReactionPlot(const RenderArgs& args) {
            s.stage_name.empty() ? "stage " + std::to_string(s.stage) : s.stage_name});
       previous_stage = s.stage;
     }
+  options.force_unit = UnitFor(Measure::kForce, args.view.Units(args.input));
   options.title = "Reactions: " + (record.scene.name.empty() ? record.directory.filename().string()
                                                              : record.scene.name);
   if (record.status != "converged" && !record.status.empty())
@@ -370,14 +375,13 @@ void AddRenderCommands(CLI::App& app, CommandRunner& runner) {
   CLI::Option* plot =
       r->add_option("--plot",
                     render->plot,
-                    "Draw a chart instead of the fabric: 'reactions', |F| [N] of each gripper and "
-                    "support against the step (a result; only --size applies)")
+                    "Draw a chart instead of the fabric: 'reactions', |F| of each gripper and "
+                    "support against the step (a result; only --size and --units apply)")
           ->check(CLI::IsMember({"reactions"}));
   // The chart covers every step and has no camera: the 3-D view's options
   // would be ignored, so they are refused.
   for (const char* name : {"--step",
                            "--field",
-                           "--units",
                            "--colour-map",
                            "--camera",
                            "--camera-position",

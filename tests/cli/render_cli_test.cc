@@ -149,6 +149,10 @@ TEST_F(RenderCli, PlotReactionsDrawsAChart) {
                " --size 640x400");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(PngSize(dir_ / "small.png"), std::make_pair(640u, 400u));
+  // --units picks the force axis' unit (its pixels: reaction_chart_test.cc).
+  r = RunDrape("render " + Fold() + " --plot reactions --units textile -o " + Out("gf.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "gf.png"));
 }
 
 TEST_F(RenderCli, PlotReactionsRefusesWhatItCannotDraw) {

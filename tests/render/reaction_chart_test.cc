@@ -138,6 +138,25 @@ TEST_F(ReactionChart, DrawsEachSeriesInItsColourWhereItsValuesAre) {
   EXPECT_TRUE(std::isnan(p.RowOf(column(0.5), ReactionColour(0), area.bottom, area.top)));
 }
 
+// In gram-force (1 gf = 9.80665e-3 N, units.h) the axis spans the same
+// lines, its range in gf: the constant 2 N stands at 2 / 9.80665e-3 gf.
+TEST_F(ReactionChart, DrawsTheForcesInTheChosenUnit) {
+  ReactionChartOptions options{"in gf", {}, 900, 600};
+  options.force_unit = UnitFor(Measure::kForce, UnitSystem::kTextile);
+  ASSERT_EQ(options.force_unit.label, "gf");
+  const double gf = 9.80665e-3;
+  const ChartArea area = WriteReactionChart(Series(), options, png_);
+  EXPECT_GT(area.force_hi, 4 / gf);
+  EXPECT_LT(area.force_hi, 1.2 * 4 / gf);
+  const Picture p = Read(png_);
+  const int x = static_cast<int>(std::lround(
+      area.left + (9 - area.step_lo) / (area.step_hi - area.step_lo) * (area.right - area.left)));
+  const double row_of_2N = area.bottom + (2 / gf - area.force_lo) /
+                                             (area.force_hi - area.force_lo) *
+                                             (area.top - area.bottom);
+  EXPECT_NEAR(p.RowOf(x, ReactionColour(0), area.bottom, area.top), row_of_2N, 3);
+}
+
 TEST_F(ReactionChart, OneStepIsAMarker) {
   ReactionSeries one{"end (gripper)", {5}, {0.25}};
   const ChartArea area = WriteReactionChart({one}, {"one step", {}, 400, 300}, png_);

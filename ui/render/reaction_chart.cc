@@ -161,7 +161,8 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
   // step gets a width of one either side.
   const double step_lo = x_lo == x_hi ? x_lo - 1 : std::min(x_lo, std::max(0.0, x_lo - 1));
   const double step_hi = x_lo == x_hi ? x_hi + 1 : x_hi;
-  const double force_hi = y_hi > 0 ? 1.08 * y_hi : 1;
+  const double per_unit = options.force_unit.si_factor;
+  const double force_hi = y_hi > 0 ? 1.08 * y_hi / per_unit : 1;
 
   if (!options.stages.empty()) {
     auto marks = vtkSmartPointer<StageMarks>::New();
@@ -174,7 +175,10 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
     const ReactionSeries& s = series[k];
     if (s.steps.empty()) continue;
     auto line = vtkSmartPointer<vtkPlotLine>::New();
-    line->SetInputData(TableOf(s.steps, s.forces), 0, 1);
+    std::vector<double> shown(s.forces.size());
+    std::transform(
+        s.forces.begin(), s.forces.end(), shown.begin(), [&](double f) { return f / per_unit; });
+    line->SetInputData(TableOf(s.steps, shown), 0, 1);
     const auto c = ReactionColour(k);
     line->SetColor(static_cast<unsigned char>(c[0]),
                    static_cast<unsigned char>(c[1]),
@@ -198,7 +202,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
   vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
   vtkAxis* y = chart->GetAxis(vtkAxis::LEFT);
   x->SetTitle("step");
-  y->SetTitle("reaction [N]");
+  y->SetTitle("reaction [" + options.force_unit.label + "]");
   x->SetBehavior(vtkAxis::FIXED);
   x->SetRange(step_lo, step_hi);
   y->SetBehavior(vtkAxis::FIXED);

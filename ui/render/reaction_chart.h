@@ -1,13 +1,15 @@
 // The reaction force of each gripper and support along a run (`drape render
-// RESULT --plot reactions`): its magnitude |F| [N] against the step, one line
-// per hold, the stages' boundaries marked and named. VTK's charts,
-// offscreen; no Qt.
+// RESULT --plot reactions`): its magnitude |F| against the step in the
+// chosen force unit, one line per hold, the stages' boundaries marked and
+// named. VTK's charts, offscreen; no Qt.
 #pragma once
 
 #include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "core/model/unit_system.h"
 
 namespace drape {
 
@@ -28,6 +30,7 @@ struct ReactionChartOptions {
   std::string title;
   std::vector<StageMark> stages;
   int width = 1280, height = 720;
+  DisplayUnit force_unit{"N", 1.0};  // the axis' unit: UnitFor(Measure::kForce, …)
 };
 
 // The line colour of series i (RGB, 0-255): the Okabe-Ito colour-blind safe
@@ -39,7 +42,7 @@ std::array<int, 3> ReactionColour(size_t i);
 struct ChartArea {
   int left = 0, bottom = 0, right = 0, top = 0;
   double step_lo = 0, step_hi = 0;    // the step axis' range
-  double force_lo = 0, force_hi = 0;  // the reaction axis' range [N]
+  double force_lo = 0, force_hi = 0;  // the reaction axis' range, in force_unit
 };
 
 // Writes the chart as a PNG of options.width x options.height and returns
