@@ -5,13 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QTest>
 
 #include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
 
@@ -194,6 +198,38 @@ TEST_F(EditorUnits, TheContactPenaltyFollowsTheChosenSystem) {
   w.units()->useChoice(UnitSystem::kSI);
   const std::string si = obstacles->penalty()->text().toStdString();
   EXPECT_TRUE(si.starts_with("2") && si.ends_with("e+08 N/m³")) << si;
+}
+
+// The table's plane at z = -0.02445 cm: its text gives the lengths in the
+// system chosen (1 in = 2.54 cm), the label names the unit, and applying
+// the text shown leaves the scene as it was.
+TEST_F(EditorUnits, TheObstaclesLengthsFollowTheChosenSystem) {
+  MainWindow& w = *window_;
+  ObstaclesPanel* obstacles = w.obstacles();
+  ASSERT_EQ(obstacles->list()->currentRow(), 0);
+  auto point = [&] {
+    const nlohmann::json o = nlohmann::json::parse(obstacles->text()->toPlainText().toStdString());
+    return o["plane"]["point"];
+  };
+  EXPECT_EQ(point(), nlohmann::json::parse(R"([0, 0, "-0.02445 cm"])"));
+  const double z = std::get<PlaneShape>(w.document()->scene().obstacles[0].shape).point[2];
+  EXPECT_NEAR(z, -0.02445e-2, 1e-15);
+  w.units()->useChoice(UnitSystem::kImperial);
+  char inches[32];
+  std::snprintf(inches, sizeof inches, "%.6g in", -0.02445 / 2.54);
+  EXPECT_EQ(point(), nlohmann::json::parse("[0, 0, \"" + std::string(inches) + "\"]"));
+  EXPECT_TRUE(Button(obstacles, "Apply") != nullptr);
+  ASSERT_TRUE(obstacles->applyText(obstacles->text()->toPlainText()))
+      << obstacles->message().toStdString();
+  EXPECT_NEAR(std::get<PlaneShape>(w.document()->scene().obstacles[0].shape).point[2],
+              z,
+              1e-6 * std::abs(z));
+  w.units()->useChoice(UnitSystem::kSI);
+  EXPECT_NEAR(point()[2].get<double>(), z, 1e-6 * std::abs(z));
+  bool named = false;
+  for (QLabel* label : obstacles->findChildren<QLabel*>())
+    named |= label->text().contains("lengths in m;");
+  EXPECT_TRUE(named);
 }
 
 }  // namespace

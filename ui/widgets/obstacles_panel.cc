@@ -47,7 +47,8 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   row->addWidget(add);
   row->addWidget(remove);
   layout->addLayout(row);
-  layout->addWidget(new QLabel("The selected obstacle as the scene file has it (m, or units):"));
+  text_label_ = new QLabel(this);
+  layout->addWidget(text_label_);
   text_ = new QPlainTextEdit(this);
   text_->setTabChangesFocus(true);
   layout->addWidget(text_, 1);
@@ -165,17 +166,28 @@ void ObstaclesPanel::refresh() {
     if (!s.obstacles.empty())
       list_->setCurrentRow(std::clamp(row, 0, static_cast<int>(s.obstacles.size()) - 1));
   }
-  const int i = list_->currentRow();
-  text_->setPlainText(i >= 0 ? QString::fromStdString(FormatJson(SceneToJson(s)["obstacles"][i]))
-                             : QString());
-  text_->setEnabled(i >= 0);
+  ShowText();
   ShowContact();
-  emit obstacleSelected(i);
+  emit obstacleSelected(list_->currentRow());
 }
 
 void ObstaclesPanel::setUnitSystem(UnitSystem system) {
   units_ = system;
+  ShowText();
   ShowContact();
+}
+
+void ObstaclesPanel::ShowText() {
+  const int i = list_->currentRow();
+  const Scene& s = document_->scene();
+  const bool any = i >= 0 && i < static_cast<int>(s.obstacles.size());
+  text_->setPlainText(any ? QString::fromStdString(
+                                FormatJson(ObstacleInUnits(SceneToJson(s)["obstacles"][i], units_)))
+                          : QString());
+  text_->setEnabled(any);
+  text_label_->setText(
+      QString("The selected obstacle as the scene file writes it (lengths in %1; any unit):")
+          .arg(QString::fromStdString(UnitFor(Measure::kLength, units_).label)));
 }
 
 void ObstaclesPanel::ShowContact() {

@@ -45,8 +45,8 @@ class ObstaclesPanel : public QWidget {
 
  public slots:
   void refresh();
-  // The contact penalty shown in `system`'s units (typing takes any unit);
-  // the obstacle's JSON stays as the scene file writes it (SI).
+  // The obstacle's lengths and the contact penalty shown in `system`'s
+  // units (typing takes any unit).
   void setUnitSystem(UnitSystem system);
 
  signals:
@@ -55,6 +55,7 @@ class ObstaclesPanel : public QWidget {
  private:
   bool Apply(const QString& what, const Scene& after);
   void ShowContact();
+  void ShowText();
 
   SceneDocument* document_;
   QListWidget* list_;
@@ -64,6 +65,7 @@ class ObstaclesPanel : public QWidget {
   QCheckBox* self_;
   QString penalty_shown_, friction_shown_;  // as refresh() wrote them
   QLabel* message_;
+  QLabel* text_label_ = nullptr;
   UnitSystem units_ = UnitSystem::kSI;
 };
 

@@ -70,4 +70,26 @@ QString ListText(const std::array<double, 3>& v, Measure measure, UnitSystem sys
            QuantityText(v[2], measure, system));
 }
 
+nlohmann::json ObstacleInUnits(const nlohmann::json& obstacle, UnitSystem system) {
+  nlohmann::json shown = obstacle;
+  if (system == UnitSystem::kSI || !shown.is_object()) return shown;
+  auto in_units = [system](nlohmann::json& value) {
+    if (value.is_number() && value.get<double>() != 0)
+      value = QuantityText(value.get<double>(), Measure::kLength, system).toStdString();
+  };
+  for (auto& [key, shape] : shown.items()) {
+    if (!shape.is_object()) continue;  // the name
+    for (const char* length :
+         {"point", "min", "max", "center", "radius", "length", "edge_radius"}) {
+      if (!shape.contains(length)) continue;
+      nlohmann::json& value = shape[length];
+      if (value.is_array())
+        for (nlohmann::json& x : value) in_units(x);
+      else
+        in_units(value);
+    }
+  }
+  return shown;
+}
+
 }  // namespace drape
