@@ -1,26 +1,17 @@
 #include "ui/widgets/main_window.h"
 
 #include <QCloseEvent>
-#include <QDockWidget>
-#include <QListWidget>
 #include <QSettings>
 #include <QStatusBar>
-#include <QTabWidget>
 #include <QVBoxLayout>
 
+#include "ui/widgets/editor_docks.h"
 #include "ui/widgets/error_box.h"
-#include "ui/widgets/holds_panel.h"
-#include "ui/widgets/loads_panel.h"
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/obstacles_panel.h"
 #include "ui/widgets/preview_controller.h"
-#include "ui/widgets/probe_plot.h"
-#include "ui/widgets/probes_panel.h"
-#include "ui/widgets/property_panel.h"
-#include "ui/widgets/reaction_plot.h"
 #include "ui/widgets/run_controller.h"
-#include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
 #include "ui/widgets/unit_settings.h"
@@ -46,7 +37,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   monitor_ = new RunMonitor(view_, this, statusBar(), this);
   units_ = new UnitSettings(this);
   previews_ = new PreviewController(this);
-  BuildDocks();
+  docks_ = new EditorDocks(document_, monitor_, this);
+  // Handles show while their editor is up: a path's with the stages, an
+  // obstacle's with the obstacles.
+  connect(docks_, &EditorDocks::stagesShown, handles_, &HandleController::setStagesShown);
+  connect(docks_, &EditorDocks::grippersShown, handles_, &HandleController::setGrippersShown);
+  connect(docks_, &EditorDocks::obstaclesShown, handles_, &HandleController::setObstaclesShown);
   ShowUnits(units_->system());
   connect(units_, &UnitSettings::changed, this, &MainWindow::ShowUnits);
   connect(documents_, &DocumentController::opened, units_, &UnitSettings::followSceneFile);
@@ -75,26 +71,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(documents_, &DocumentController::accepted, this, &MainWindow::OnAccepted);
   // The editors that can use picked nodes hear of them.
-  connect(picking_, &PickingController::pickedChanged, this, [this](auto& nodes, auto& at) {
-    supports_->setPickedNodes(nodes, at);
-    grippers_->setPickedNodes(nodes, at);
-    loads_->setPickedNodes(nodes, at);
-    probes_->setPicked(at);
-  });
-  connect(stages_->moves(), &MoveEditor::moveSelected, handles_, &HandleController::selectMove);
+  connect(picking_, &PickingController::pickedChanged, docks_, &EditorDocks::setPicked);
+  connect(stages()->moves(), &MoveEditor::moveSelected, handles_, &HandleController::selectMove);
   connect(
-      obstacles_, &ObstaclesPanel::obstacleSelected, handles_, &HandleController::selectObstacle);
-  connect(tree_, &ModelTree::chosen, this, [this](ModelTree::Part part, int index, int move) {
-    ShowEditor(static_cast<int>(part), index, move);
-  });
+      obstacles(), &ObstaclesPanel::obstacleSelected, handles_, &HandleController::selectObstacle);
   actions_ = new WorkbenchActions(this);
-  connect(tree_, &ModelTree::opened, this, [this](ModelTree::Part part, int, int) {
+  connect(tree(), &ModelTree::opened, this, [this](ModelTree::Part part, int, int) {
     if (part == ModelTree::Part::kMaterial && actions_->material()->isEnabled())
       actions_->material()->trigger();
   });
   UpdateControls();
-  // Seven editors share the left dock area: their tabs stand on its side.
-  setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
   resize(1280, 960);
   QSettings settings;
   if (settings.contains("window/geometry"))
@@ -109,104 +95,6 @@ MainWindow::~MainWindow() {
   // The renderer's actors (and the handles in it) live in the viewport's
   // window: released while the GL context exists.
   view_->releaseRenderer();
-}
-
-void MainWindow::BuildDocks() {
-  tree_ = new ModelTree(document_, this);
-  tree_->setMinimumHeight(170);
-  auto* tree_dock = new QDockWidget("Scene", this);
-  tree_dock->setObjectName("Scene");
-  tree_dock->setWidget(tree_);
-  addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
-  properties_ = new PropertyPanel(document_, this);
-  QDockWidget* properties_dock = AddPanel("Properties", properties_, nullptr);
-  // The tree above, the editors tabbed below it.
-  splitDockWidget(tree_dock, properties_dock, Qt::Vertical);
-  supports_ = new HoldsPanel(HoldsPanel::Role::kSupports, document_, this);
-  QDockWidget* supports_dock = AddPanel("Supports", supports_, properties_dock);
-  grippers_ = new HoldsPanel(HoldsPanel::Role::kGrippers, document_, this);
-  QDockWidget* grippers_dock = AddPanel("Grippers", grippers_, properties_dock);
-  loads_ = new LoadsPanel(document_, this);
-  QDockWidget* loads_dock = AddPanel("Loads", loads_, properties_dock);
-  obstacles_ = new ObstaclesPanel(document_, this);
-  QDockWidget* obstacles_dock = AddPanel("Obstacles", obstacles_, properties_dock);
-  stages_ = new StagesPanel(document_, this);
-  QDockWidget* stages_dock = AddPanel("Stages", stages_, properties_dock);
-  probes_ = new ProbesPanel(document_, this);
-  QDockWidget* probes_dock = AddPanel("Probes", probes_, properties_dock);
-  // In ModelTree::Part's order.
-  editor_docks_ = {properties_dock,
-                   properties_dock,
-                   supports_dock,
-                   grippers_dock,
-                   obstacles_dock,
-                   stages_dock,
-                   probes_dock,
-                   properties_dock,
-                   loads_dock};
-  properties_dock->raise();
-  resizeDocks({tree_dock, properties_dock}, {220, 700}, Qt::Vertical);
-  // Handles show while their editor is up: a path's with the stages, an
-  // obstacle's with the obstacles. (A dock tabbed behind another still says
-  // isVisible(); the signal says when its tab is selected or unselected.)
-  connect(
-      stages_dock, &QDockWidget::visibilityChanged, handles_, &HandleController::setStagesShown);
-  connect(grippers_dock,
-          &QDockWidget::visibilityChanged,
-          handles_,
-          &HandleController::setGrippersShown);
-  connect(obstacles_dock,
-          &QDockWidget::visibilityChanged,
-          handles_,
-          &HandleController::setObstaclesShown);
-  QDockWidget* plot_dock = AddPlot("Run", monitor_->plot(), nullptr);
-  AddPlot("Probe plot", monitor_->probePlot(), plot_dock);
-  AddPlot("Residuals", monitor_->residualPlot(), plot_dock);
-  AddPlot("Reactions", monitor_->reactionPlot(), plot_dock);
-  plot_dock->raise();
-}
-
-QDockWidget* MainWindow::AddPanel(const QString& title, QWidget* panel, QDockWidget* tab_with) {
-  auto* dock = new QDockWidget(title, this);
-  dock->setObjectName(title);  // for saveState
-  dock->setWidget(panel);
-  addDockWidget(Qt::LeftDockWidgetArea, dock);
-  if (tab_with) tabifyDockWidget(tab_with, dock);
-  return dock;
-}
-
-QDockWidget* MainWindow::AddPlot(const QString& title, QWidget* plot, QDockWidget* tab_with) {
-  auto* dock = new QDockWidget(title, this);
-  dock->setObjectName(title);
-  dock->setWidget(plot);
-  addDockWidget(Qt::BottomDockWidgetArea, dock);
-  if (tab_with) tabifyDockWidget(tab_with, dock);
-  return dock;
-}
-
-// The editor of what the model tree chose, raised, with the item selected.
-void MainWindow::ShowEditor(int part, int index, int move) {
-  if (part < 0 || part >= static_cast<int>(editor_docks_.size())) return;
-  editor_docks_[part]->raise();
-  if (index < 0) return;
-  switch (static_cast<ModelTree::Part>(part)) {
-    case ModelTree::Part::kSupports:
-      return supports_->list()->setCurrentRow(index);
-    case ModelTree::Part::kGrippers:
-      return grippers_->list()->setCurrentRow(index);
-    case ModelTree::Part::kObstacles:
-      return obstacles_->list()->setCurrentRow(index);
-    case ModelTree::Part::kStages:
-      stages_->list()->setCurrentRow(index);
-      if (move >= 0) stages_->moves()->list()->setCurrentRow(move);
-      return;
-    case ModelTree::Part::kProbes:
-      return probes_->list()->setCurrentRow(index);
-    case ModelTree::Part::kLoads:
-      return loads_->list()->setCurrentRow(index);
-    default:
-      return;
-  }
 }
 
 // The document's scene was modelled: the view shows it with the document's
@@ -225,25 +113,15 @@ void MainWindow::OnAccepted(bool renumbered, bool edited) {
 }
 
 void MainWindow::ShowUnits(UnitSystem system) {
-  properties_->setUnitSystem(system);
-  loads_->setUnitSystem(system);
-  supports_->setUnitSystem(system);
-  grippers_->setUnitSystem(system);
-  probes_->setUnitSystem(system);
-  obstacles_->setUnitSystem(system);
-  tree_->setUnitSystem(system);
-  stages_->moves()->setUnitSystem(system);
-  monitor_->probePlot()->setUnitSystem(system);
-  monitor_->reactionPlot()->setUnitSystem(system);
+  docks_->setUnitSystem(system);
+  monitor_->setUnitSystem(system);
   view_->setUnitSystem(system);
 }
 
 void MainWindow::UpdateControls() {
   const bool running = isRunning();
   // A run works on the scene it started with: no edits meanwhile.
-  for (QWidget* editor : std::initializer_list<QWidget*>{
-           properties_, stages_, supports_, grippers_, obstacles_, loads_, probes_})
-    editor->setEnabled(!running);
+  docks_->setEditable(!running);
   if (actions_)
     actions_->update(view_->model() != nullptr, running, isPaused(), monitor_->isEstimating());
 }

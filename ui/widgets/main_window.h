@@ -2,7 +2,7 @@
 // (DocumentController: open, save, autosave; each change modelled once),
 // its 3-D view and timeline (ViewController), picking (PickingController)
 // and drag handles (HandleController) in the view, a run on a worker thread
-// with its plots (RunMonitor), the editors docked at the left, the menus
+// with its plots (RunMonitor), the editors and plots docked (EditorDocks), the menus
 // and toolbar (WorkbenchActions), export (ExportController), the unit
 // system everything is shown in (UnitSettings, the Units menu) and a draft
 // preview of each edit drawn as a ghost (PreviewController).
@@ -20,6 +20,7 @@
 #include "core/solve/step_state.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/document_controller.h"
+#include "ui/widgets/editor_docks.h"
 #include "ui/widgets/error_estimate_label.h"
 #include "ui/widgets/export_controller.h"
 #include "ui/widgets/handle_controller.h"
@@ -30,7 +31,6 @@
 #include "ui/widgets/view_controller.h"
 
 class QCloseEvent;
-class QDockWidget;
 class QLabel;
 
 namespace drape {
@@ -85,14 +85,15 @@ class MainWindow : public QMainWindow {
   WorkbenchActions* actions() const { return actions_; }
   UnitSettings* units() const { return units_; }
   PreviewController* previews() const { return previews_; }
-  PropertyPanel* properties() const { return properties_; }
-  StagesPanel* stages() const { return stages_; }
-  HoldsPanel* supports() const { return supports_; }
-  HoldsPanel* grippers() const { return grippers_; }
-  ObstaclesPanel* obstacles() const { return obstacles_; }
-  LoadsPanel* loads() const { return loads_; }
-  ProbesPanel* probes() const { return probes_; }
-  ModelTree* tree() const { return tree_; }
+  EditorDocks* docks() const { return docks_; }
+  PropertyPanel* properties() const { return docks_->properties(); }
+  StagesPanel* stages() const { return docks_->stages(); }
+  HoldsPanel* supports() const { return docks_->supports(); }
+  HoldsPanel* grippers() const { return docks_->grippers(); }
+  ObstaclesPanel* obstacles() const { return docks_->obstacles(); }
+  LoadsPanel* loads() const { return docks_->loads(); }
+  ProbesPanel* probes() const { return docks_->probes(); }
+  ModelTree* tree() const { return docks_->tree(); }
   RunPlot* plot() const { return monitor_->plot(); }
   ProbePlot* probePlot() const { return monitor_->probePlot(); }
   ResidualPlot* residualPlot() const { return monitor_->residualPlot(); }
@@ -153,16 +154,12 @@ class MainWindow : public QMainWindow {
 
  private:
   void closeEvent(QCloseEvent* event) override;
-  void BuildDocks();
   void OnAccepted(bool renumbered, bool edited);
   void ShowUnits(UnitSystem system);
   void OnFinished(const SolveSummary& summary);
   void UpdateControls();
   // A written (or cancelled) export in the status bar; otherwise its reason in `error`.
   bool Report(const ExportOutcome& outcome, QString* error);
-  void ShowEditor(int part, int index, int move);
-  QDockWidget* AddPanel(const QString& title, QWidget* panel, QDockWidget* tab_with);
-  QDockWidget* AddPlot(const QString& title, QWidget* plot, QDockWidget* tab_with);
 
   SceneDocument* document_ = nullptr;
   DocumentController* documents_ = nullptr;
@@ -174,14 +171,7 @@ class MainWindow : public QMainWindow {
   WorkbenchActions* actions_ = nullptr;
   UnitSettings* units_ = nullptr;
   PreviewController* previews_ = nullptr;
-  PropertyPanel* properties_ = nullptr;
-  StagesPanel* stages_ = nullptr;
-  HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;
-  ObstaclesPanel* obstacles_ = nullptr;
-  LoadsPanel* loads_ = nullptr;
-  ProbesPanel* probes_ = nullptr;
-  ModelTree* tree_ = nullptr;
-  std::vector<QDockWidget*> editor_docks_;  // by ModelTree::Part
+  EditorDocks* docks_ = nullptr;
 };
 
 }  // namespace drape
