@@ -7,6 +7,7 @@
 #include <variant>
 
 #include <QLabel>
+#include <QListWidget>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
@@ -17,15 +18,20 @@
 #include "support/test_paths.h"
 #include "ui/widgets/document_controller.h"
 #include "ui/widgets/drag_handles.h"
+#include "ui/widgets/editor_docks.h"
 #include "ui/widgets/handle_controller.h"
 #include "ui/widgets/holds_panel.h"
+#include "ui/widgets/loads_panel.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/model_tree.h"
+#include "ui/widgets/obstacles_panel.h"
 #include "ui/widgets/path_handles.h"
 #include "ui/widgets/picking_controller.h"
+#include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/run_monitor.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/stages_panel.h"
 #include "ui/widgets/view_controller.h"
 #include "widgets/gui_test.h"
 
@@ -82,6 +88,41 @@ TEST_F(WorkbenchParts, AnAcceptedEditBuildsOneModelThatTheViewAndThePanelsShare)
   shared();
   EXPECT_EQ(window_->properties()->meshInfo()->text().toStdString(),
             "243 nodes, 160 elements, 1215 DOFs");
+}
+
+// The docks: what the tree chooses comes up with its item selected (the
+// editors tabbed behind it hidden), the stages' tab coming up says so (its
+// path handles follow), and a run's lock disables every editor.
+TEST_F(WorkbenchParts, TheDocksRaiseWhatTheTreeChoosesAndLockTheEditors) {
+  EditorDocks* docks = window_->docks();
+  QSignalSpy stages_shown(docks, &EditorDocks::stagesShown);
+  emit window_->tree()->chosen(ModelTree::Part::kGrippers, 0, -1);
+  QTest::qWait(50);
+  // A dock tabbed behind another still says isVisible(); what shows has a
+  // visible region.
+  auto shown = [](QWidget* w) { return !w->visibleRegion().isEmpty(); };
+  EXPECT_TRUE(shown(docks->grippers()));
+  EXPECT_FALSE(shown(docks->supports()));
+  EXPECT_EQ(docks->grippers()->list()->currentRow(), 0);
+  emit window_->tree()->chosen(ModelTree::Part::kStages, 1, -1);
+  QTest::qWait(50);
+  EXPECT_TRUE(shown(docks->stages()));
+  EXPECT_FALSE(shown(docks->grippers()));
+  EXPECT_EQ(docks->stages()->list()->currentRow(), 1);
+  ASSERT_FALSE(stages_shown.isEmpty());
+  EXPECT_TRUE(stages_shown.last().at(0).toBool());
+
+  docks->setEditable(false);
+  for (QWidget* editor : std::initializer_list<QWidget*>{docks->properties(),
+                                                         docks->stages(),
+                                                         docks->supports(),
+                                                         docks->grippers(),
+                                                         docks->obstacles(),
+                                                         docks->loads(),
+                                                         docks->probes()})
+    EXPECT_FALSE(editor->isEnabled()) << editor->metaObject()->className();
+  docks->setEditable(true);
+  EXPECT_TRUE(docks->probes()->isEnabled());
 }
 
 TEST_F(WorkbenchParts, PickingANodeTwiceTogglesItAndTheEditorsHear) {
