@@ -12,13 +12,20 @@
 namespace drape {
 
 struct AccdSettings {
-  double offset = 0;      // ξ [m]
-  double keep = 0.1;      // stop at this fraction of the starting gap d − ξ
-  int max_steps = 10000;  // advancement steps before giving up (then 0)
+  double offset = 0;  // ξ [m]
+  double keep = 0.1;  // stop at this fraction of the starting gap d − ξ
+  // Advance no further than this: a caller taking the least bound over many
+  // pairs passes the least so far, and a pair that reaches it cannot lower
+  // it. Sliding at a small gap advances by gap / closing speed a step, so
+  // without it one such pair costs thousands of distance evaluations.
+  double max_t = 1;
+  // Advancement steps before giving up; the part advanced so far is still
+  // safe and is returned.
+  int max_steps = 10000;
 };
 
 // Point p against triangle (a, b, c), each moving by its Δ over the step;
-// returns t ∈ [0, 1].
+// returns t ∈ [0, max_t].
 double PointTriangleStepBound(const Eigen::Vector3d& p,
                               const Eigen::Vector3d& a,
                               const Eigen::Vector3d& b,
@@ -29,7 +36,7 @@ double PointTriangleStepBound(const Eigen::Vector3d& p,
                               const Eigen::Vector3d& dc,
                               const AccdSettings& settings);
 
-// Edge (a0, a1) against edge (b0, b1); returns t ∈ [0, 1].
+// Edge (a0, a1) against edge (b0, b1); returns t ∈ [0, max_t].
 double EdgeEdgeStepBound(const Eigen::Vector3d& a0,
                          const Eigen::Vector3d& a1,
                          const Eigen::Vector3d& b0,

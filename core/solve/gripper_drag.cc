@@ -113,12 +113,17 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
   DragFrame frame;
   frame.frame = ++frames_;
   const Eigen::Vector3d motion = offset - offset_;
+  double taken = 0, share = 1;
+  bool moved = false;
   // The motion in sub-steps: whole if it can, else halves, quarters, …
   // (growing back after a success), until it is all taken or the sub-steps
   // run out; then the gripper lags the handle and the next frame catches up.
-  double taken = 0, share = 1;
-  bool moved = false;
-  for (int substep = 0; substep < settings_.max_substeps && taken < 1; ++substep) {
+  auto out_of_time = [&] {
+    return moved &&
+           std::chrono::duration<double>(Clock::now() - start).count() > settings_.budget_seconds;
+  };
+  for (int substep = 0; substep < settings_.max_substeps && taken < 1 && !out_of_time();
+       ++substep) {
     const double part = std::min(share, 1 - taken);
     const ShellState kept = basis_.state;
     const double reached = Predict(part * motion, frame);
@@ -133,7 +138,7 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
       continue;
     }
     basis_.state = kept;
-    share /= 2;
+    share = part / 2;  // of what failed: after a success `share` may exceed it
     if (share < std::ldexp(1.0, -settings_.max_halvings)) break;
   }
   if (!moved) {

@@ -129,8 +129,11 @@ double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
   AccdSettings accd;
   accd.offset = settings_.offset;
   double t = 1;
+  // Each pair need only advance as far as the least bound so far.
   const auto& triangles = proximity_.triangles();
   for (const auto& [i, k] : pairs.point_triangle) {
+    if (t == 0) return 0;
+    accd.max_t = t;
     const auto& tri = triangles[k];
     t = std::min(t,
                  PointTriangleStepBound(Row(x, i),
@@ -145,6 +148,8 @@ double SelfContact::StepBound(const Positions& x, const Positions& dx) const {
   }
   const auto& edges = proximity_.edges();
   for (const auto& [a, b] : pairs.edge_edge) {
+    if (t == 0) return 0;
+    accd.max_t = t;
     const auto& p = edges[a];
     const auto& q = edges[b];
     t = std::min(t,

@@ -54,6 +54,37 @@ TEST(AdditiveCcd, CrossingEdgesStopBeforeTheyMeet) {
   EXPECT_LT(t, 0.3);
 }
 
+TEST(AdditiveCcd, APairStopsAtTheBoundItCannotLower) {
+  const V3 a(-1, -1, 0), b(2, -1, 0), c(-1, 2, 0), zero = V3::Zero();
+  AccdSettings s;
+  s.offset = 0.5;
+  // The falling point of the first test, limited to 0.1 < 0.225 by an
+  // earlier pair: it stops there. Limited to 0.5, it stops short as alone.
+  s.max_t = 0.1;
+  EXPECT_EQ(PointTriangleStepBound(V3(0, 0, 1), a, b, c, V3(0, 0, -2), zero, zero, zero, s), 0.1);
+  s.max_t = 0.5;
+  const double t = PointTriangleStepBound(V3(0, 0, 1), a, b, c, V3(0, 0, -2), zero, zero, zero, s);
+  EXPECT_GT(t, 0.2);
+  EXPECT_LE(t, 0.225 + 1e-12);
+}
+
+TEST(AdditiveCcd, OutOfStepsItKeepsWhatItAdvanced) {
+  // A point sliding 1 along a face 1e-4 above the offset: each step
+  // advances by 0.9 · 1e-4 of the slide, so 50 steps reach t ≈ 4.5e-3 —
+  // safe, since the height never changes — where giving up used to
+  // return 0 and stall the Newton step.
+  const V3 a(-1, -1, 0), b(2, -1, 0), c(-1, 2, 0), zero = V3::Zero();
+  AccdSettings s;
+  s.offset = 0.5;
+  s.max_steps = 50;
+  const V3 p(0, 0, 0.5 + 1e-4), slide(1, 0, 0);
+  const double t = PointTriangleStepBound(p, a, b, c, slide, zero, zero, zero, s);
+  // Steps: (1 − keep) · gap / closing first, then 0.9 · gap / closing.
+  EXPECT_NEAR(t, (0.9 + 49 * 0.9) * 1e-4, 1e-9);
+  s.max_steps = 12000;  // enough for 1 / 0.9e-4 ≈ 11112 steps: the whole slide
+  EXPECT_EQ(PointTriangleStepBound(p, a, b, c, slide, zero, zero, zero, s), 1);
+}
+
 V3 Random(std::mt19937_64& rng, double scale) {
   std::normal_distribution<double> n(0.0, scale);
   return V3(n(rng), n(rng), n(rng));

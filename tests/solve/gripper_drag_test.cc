@@ -59,6 +59,29 @@ TEST(GripperDrag, FramesFollowTheHandleNearEquilibrium) {
   EXPECT_NEAR((drag.offset() - by).norm(), 0, 1e-15) << "the gripper caught up with the handle";
 }
 
+TEST(GripperDrag, AFrameOutOfTimeLeavesTheRestToTheNext) {
+  // The whole 3 cm lift at once cannot be one sub-step; with no time to
+  // spare a frame keeps its first successful sub-step and stops there,
+  // and the frames after it catch up with the handle.
+  const Scene scene = CornerLift();
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  ASSERT_TRUE(solver.Solve({}).IsComplete());
+  DragSettings settings;
+  settings.budget_seconds = 0;
+  GripperDrag drag(solver.BasisForDrag("corner"), settings);
+  const Eigen::Vector3d by(0, 0, 0.03);
+  const DragFrame first = drag.MoveTo(by);
+  EXPECT_GT(first.offset.z(), 0);
+  EXPECT_LT(first.offset.z(), by.z()) << "one sub-step took the whole lift";
+  EXPECT_LE(first.residual_ratio, settings.worst_ratio);
+  DragFrame last = first;
+  int frames = 1;
+  for (; frames < 40 && (last.offset - by).norm() > 0; ++frames) last = drag.MoveTo(by);
+  std::printf("caught up in %d frames\n", frames);
+  EXPECT_NEAR((last.offset - by).norm(), 0, 1e-15) << "the gripper caught up with the handle";
+  EXPECT_LE(last.residual_ratio, settings.worst_ratio);
+}
+
 TEST(GripperDrag, ASettledDragIsTheDraggedSceneSolvedFromTheStart) {
   // Two ways to the same equilibrium: frames from the run's end, and the
   // continuation of the dragged scene from the flat sheet.
