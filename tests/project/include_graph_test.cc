@@ -1,0 +1,70 @@
+// The layering (README, "Shape of the code"): app → ui → core, core with
+// neither Qt nor VTK, ui/render (the renderer the command line links) with
+// no Qt. Read from the sources' #include lines, so a forbidden include
+// fails here with its file and line, not later as a link error elsewhere.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every `#include` of the sources under `folder` that starts with one of
+// `forbidden` ("ui/", "<Q", …), as "file:line: text".
+std::vector<std::string> ForbiddenIncludes(const std::string& folder,
+                                           const std::vector<std::string>& forbidden) {
+  std::vector<std::string> found;
+  const fs::path root = fs::path(DRAPE_SOURCE_DIR) / folder;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".h" && ext != ".cc") continue;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+      const auto at = line.find("#include");
+      if (at == std::string::npos) continue;
+      const auto target = line.find_first_of("\"<", at);
+      if (target == std::string::npos) continue;
+      const std::string included = line.substr(target);
+      for (const std::string& f : forbidden)
+        if (included.rfind(f, 0) == 0)
+          found.push_back(fs::relative(entry.path(), DRAPE_SOURCE_DIR).string() + ":" +
+                          std::to_string(number) + ": " + line);
+    }
+  }
+  return found;
+}
+
+std::string Lines(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const auto& l : lines) out += l + "\n";
+  return out;
+}
+
+TEST(IncludeGraph, CoreHasNoQtNoVtkAndNothingAboveIt) {
+  const auto found = ForbiddenIncludes("core", {"\"ui/", "\"app/", "<Q", "<vtk", "\"vtk"});
+  EXPECT_TRUE(found.empty()) << Lines(found);
+}
+
+TEST(IncludeGraph, TheRendererHasNoQtAndTheWorkbenchNoApp) {
+  const auto render = ForbiddenIncludes("ui/render", {"\"ui/widgets/", "\"app/", "<Q"});
+  EXPECT_TRUE(render.empty()) << Lines(render);
+  const auto widgets = ForbiddenIncludes("ui/widgets", {"\"app/"});
+  EXPECT_TRUE(widgets.empty()) << Lines(widgets);
+}
+
+TEST(IncludeGraph, TheCheckFindsAForbiddenInclude) {
+  // The reader itself: tests/project includes <gtest/…>, so asking for
+  // "<gtest" there must find this very file.
+  const auto found = ForbiddenIncludes("tests/project", {"<gtest"});
+  ASSERT_FALSE(found.empty());
+  EXPECT_NE(found.front().find("include_graph_test.cc:5:"), std::string::npos) << found.front();
+}
+
+}  // namespace
+}  // namespace drape
