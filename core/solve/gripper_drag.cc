@@ -90,17 +90,32 @@ double GripperDrag::Correct(DragFrame& frame) {
            corrections >= settings_.max_corrections ||
            residual.norm() <= kRoundOffFactor * system.RoundOffLevel(basis_.state);
   };
+  // The factorisation is of an earlier state: the predictor's start, or the
+  // state before the last correction.
+  bool stale = true;
   while (!done()) {
     Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-residual));
     if (const double t = system.StepBound(basis_.state, correction); t < 1) correction *= t;
+    const ShellState before = basis_.state;
     ApplyIncrement(correction, basis_.state);
     ++corrections;
     ++frame.corrections;
     const double last = ratio;
     ratio = Residual(/*fresh=*/false, residual, frame);
-    // Slow: the tangent has gone stale. Assemble it here, factorise, go on.
-    if (!done() && ratio > settings_.contraction * last)
+    if (stale && !(ratio < last)) {
+      // A stale tangent made things worse (contact came or went since it
+      // was factorised): undo, and correct again on the tangent here.
+      basis_.state = before;
       ratio = Residual(/*fresh=*/true, residual, frame);
+      stale = false;
+      continue;
+    }
+    stale = true;
+    // Slow: the tangent has gone stale. Assemble it here, factorise, go on.
+    if (!done() && ratio > settings_.contraction * last) {
+      ratio = Residual(/*fresh=*/true, residual, frame);
+      stale = false;
+    }
   }
   return ratio;
 }
