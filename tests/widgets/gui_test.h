@@ -5,9 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <system_error>
+
 #include <QApplication>
 #include <QColor>
 #include <QImage>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 
@@ -43,10 +49,21 @@ class Widgets : public ::testing::Test {
     // QApplication would, and its destructor then crashed the process.
     static QApplication* app = new QApplication(argc, argv);
     (void)app;
-    // Settings and autosaves of the tests stay out of the user's own.
+    // Settings and autosaves of the tests stay out of the user's own, and
+    // out of each other's: ctest runs test processes side by side, and one
+    // process's Units choice once turned another's scene to SI mid-test.
     QStandardPaths::setTestModeEnabled(true);
     QApplication::setOrganizationName("Drape Studio tests");
-    QApplication::setApplicationName("widgets_tests");
+    QApplication::setApplicationName("widgets_tests-" +
+                                     QString::number(QCoreApplication::applicationPid()));
+    static const std::string settings = QSettings().fileName().toStdString();
+    static const std::string data =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation).toStdString();
+    std::atexit([] {
+      std::error_code ignored;
+      std::filesystem::remove(settings, ignored);
+      std::filesystem::remove_all(data, ignored);
+    });
   }
   void SetUp() override {
     if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
