@@ -47,7 +47,9 @@
 #include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/selection_rule.h"
 #include "ui/widgets/stages_panel.h"
+#include "ui/widgets/typed_json.h"
 #include "widgets/gui_test.h"
 
 namespace drape {
@@ -626,6 +628,23 @@ TEST_F(Widgets, LoadsAreTypedWithUnitsAndAppliedByALoadStage) {
   QUndoStack* undo = doc->undoStack();
   while (undo->canUndo()) undo->undo();
   EXPECT_EQ(doc->scene(), original);
+}
+
+TEST_F(Widgets, TheSelectedLoadShowsItsRuleAndPoint) {
+  MainWindow window;
+  ASSERT_TRUE(window.openScene(StripFold()));
+  LoadsPanel* loads = window.loads();
+  ASSERT_TRUE(loads->add("point", "0, 0, -2 gf", "0, 0, 0", 0.05, 0.0))
+      << loads->message().toStdString();
+  ASSERT_TRUE(loads->add("right", "0, 0, -1 gf")) << loads->message().toStdString();
+  EXPECT_EQ(loads->rule()->rule()->currentText().toStdString(), "right");
+  loads->list()->setCurrentRow(0);
+  EXPECT_EQ(loads->rule()->rule()->currentText().toStdString(), "point");
+  const auto at = TypedPoint(loads->rule()->point()->text());  // in the shown units
+  EXPECT_NEAR(at[0], 0.05, 1e-12);
+  EXPECT_NEAR(at[1], 0.0, 1e-12);
+  loads->list()->setCurrentRow(1);
+  EXPECT_EQ(loads->rule()->rule()->currentText().toStdString(), "right");
 }
 
 TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {

@@ -142,6 +142,7 @@ void LoadsPanel::refresh() {
   if (i >= 0) {
     force_->setText(ListText(s.loads[i].force, Measure::kForce, units_));
     moment_->setText(ListText(s.loads[i].moment, Measure::kMoment, units_));
+    rule_->show(s.loads[i].select);
   }
 }
 

@@ -28,6 +28,8 @@ class LoadsPanel : public QWidget {
   explicit LoadsPanel(SceneDocument* document, QWidget* parent = nullptr);
 
   QListWidget* list() const { return list_; }
+  // The rule rows: the selected load's rule, or the one a new load takes.
+  SelectionRuleEditor* rule() const { return rule_; }
   QString message() const;
 
   // A new load on `rule` (as SelectionRuleEditor: "right", "point", …)
