@@ -1012,6 +1012,7 @@ bool ShellSolver::Impl::RunStage(int index) {
   else
     ok = RunPath(index, loading, stage);
   if (ok && contact && contact->stabilization() > 0) ok = Settle(index, loading, stage);
+  if (ok) summary.final_negative_pivots = last_negative_pivots;
   if (ok && last_negative_pivots > 0) {
     // Only with `fundamental` branching, past a limit point, or on a branch
     // that is itself unstable: say so rather than let it pass as converged.

@@ -97,10 +97,15 @@ std::string Describe(const StabilityEvent& e) {
 
 std::string SolveSummary::BriefReport() const {
   char line[256];
+  // "Converged" alone is a state a real part can rest in.
+  std::string headline = ToString(termination);
+  if (IsComplete() && final_negative_pivots > 0)
+    headline += " to an unstable equilibrium (" + std::to_string(final_negative_pivots) +
+                " negative pivot" + (final_negative_pivots == 1 ? ")" : "s)");
   std::snprintf(line,
                 sizeof line,
                 "%s: %d steps, %d iterations, %d cut-backs, %.3f s",
-                ToString(termination),
+                headline.c_str(),
                 steps,
                 iterations,
                 step_cuts,

@@ -60,6 +60,10 @@ struct SolveSummary {
   std::vector<std::string> notes;     // what was used instead of what was asked, and why
   std::vector<std::string> warnings;  // about the scene (e.g. a softening bending law) and
                                       // about the result (a stage ending on an unstable state)
+  // Negative pivots of the tangent at the last stage's end: 0 is a state a
+  // real part rests in; more, and the report says the run converged to an
+  // unstable equilibrium rather than just "converged".
+  int final_negative_pivots = 0;
 
   // Bending: the largest principal curvature reached in any converged step,
   // against the range the bending laws were measured or fitted over (∞ when
