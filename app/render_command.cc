@@ -19,8 +19,8 @@
 
 #include "app/commands.h"
 #include "app/render_program.h"
+#include "core/fe/element_fields.h"
 #include "core/model/unit_system.h"
-#include "core/solve/element_fields.h"
 #ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
 #include "core/io/result_reader.h"

@@ -11,13 +11,13 @@
 #include <array>
 #include <string>
 
+#include "core/contact/node_contact.h"
+#include "core/contact/self_contact.h"
+#include "core/contact/self_proximity.h"
+#include "core/continuation/equilibrium_system.h"
+#include "core/fe/dof_map.h"
+#include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
-#include "core/solve/dof_map.h"
-#include "core/solve/equilibrium_system.h"
-#include "core/solve/node_contact.h"
-#include "core/solve/self_contact.h"
-#include "core/solve/self_proximity.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/shell_solver.h"
 #include "scene_solve.h"
 #include "support/test_paths.h"

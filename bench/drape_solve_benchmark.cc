@@ -23,11 +23,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/continuation/equilibrium_system.h"
+#include "core/fe/dof_map.h"
+#include "core/fe/shell_assembler.h"
+#include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
-#include "core/solve/dof_map.h"
-#include "core/solve/equilibrium_system.h"
-#include "core/solve/shell_assembler.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/shell_solver.h"
 #include "core/solve/solver_options.h"
 #include "support/test_paths.h"

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "core/solve/sparse_cholesky.h"
+#include "core/linalg/sparse_cholesky.h"
 
 namespace drape {
 namespace {

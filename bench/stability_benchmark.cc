@@ -18,9 +18,9 @@
 #include <array>
 #include <string>
 
+#include "core/continuation/equilibrium_system.h"
+#include "core/fe/dof_map.h"
 #include "core/io/scene_reader.h"
-#include "core/solve/dof_map.h"
-#include "core/solve/equilibrium_system.h"
 #include "core/solve/shell_solver.h"
 #include "support/test_paths.h"
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/fe/shell_state.h"
 #include "core/io/state_file.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_state.h"
 #include "core/solve/step_state.h"
 
 namespace drape {

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
 

@@ -218,7 +218,7 @@ struct Contact {
   std::optional<double> penalty;  // [N/m³] per unit area; absent = "auto"
   double friction = 0;            // Coulomb μ
   // Self-contact: the fabric's layers kept `thickness` apart (default the
-  // material's) by a barrier (core/solve/self_contact.h).
+  // material's) by a barrier (core/contact/self_contact.h).
   bool self = true;
   std::optional<double> thickness;  // [m]
   friend bool operator==(const Contact&, const Contact&) = default;

@@ -10,7 +10,7 @@
 #include <omp.h>
 #endif
 
-#include "core/solve/stage_loading.h"
+#include "core/fe/stage_loading.h"
 
 namespace drape {
 namespace {

@@ -31,11 +31,11 @@
 
 #include <string>
 
+#include "core/contact/node_contact.h"
+#include "core/continuation/equilibrium_system.h"
+#include "core/fe/shell_model.h"
+#include "core/fe/shell_state.h"
 #include "core/model/scene.h"
-#include "core/solve/equilibrium_system.h"
-#include "core/solve/node_contact.h"
-#include "core/solve/shell_model.h"
-#include "core/solve/shell_state.h"
 
 namespace drape {
 

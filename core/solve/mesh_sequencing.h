@@ -6,10 +6,10 @@
 // the factorisations of the path's steps are what a drape costs.
 #pragma once
 
+#include "core/fe/shell_model.h"
+#include "core/fe/shell_state.h"
 #include "core/model/scene.h"
 #include "core/model/sequencing_check.h"
-#include "core/solve/shell_model.h"
-#include "core/solve/shell_state.h"
 
 namespace drape {
 

@@ -13,20 +13,20 @@
 #include <omp.h>
 #endif
 
+#include "core/contact/contact_setup.h"
+#include "core/contact/node_contact.h"
+#include "core/contact/self_proximity.h"
+#include "core/continuation/arc_length_stepper.h"
+#include "core/continuation/branch_switch.h"
+#include "core/continuation/equilibrium_system.h"
+#include "core/continuation/newton_solver.h"
+#include "core/fe/dof_map.h"
+#include "core/fe/element_fields.h"
+#include "core/fe/stage_loading.h"
 #include "core/model/scene_error.h"
 #include "core/model/solver_preset.h"
-#include "core/solve/arc_length_stepper.h"
-#include "core/solve/branch_switch.h"
-#include "core/solve/contact_setup.h"
-#include "core/solve/dof_map.h"
-#include "core/solve/element_fields.h"
-#include "core/solve/equilibrium_system.h"
 #include "core/solve/gripper_drag.h"
 #include "core/solve/mesh_sequencing.h"
-#include "core/solve/newton_solver.h"
-#include "core/solve/node_contact.h"
-#include "core/solve/self_proximity.h"
-#include "core/solve/stage_loading.h"
 
 namespace drape {
 namespace {

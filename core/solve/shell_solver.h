@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/solver_options.h"
 #include "core/solve/step_state.h"

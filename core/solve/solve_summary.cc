@@ -34,22 +34,6 @@ const char* ToString(Termination t) {
   return "?";
 }
 
-const char* ToString(StabilityKind kind) {
-  return kind == StabilityKind::kLimit ? "limit" : "bifurcation";
-}
-
-const char* ToString(Branch branch) {
-  switch (branch) {
-    case Branch::kFundamental:
-      return "fundamental";
-    case Branch::kStable:
-      return "stable";
-    case Branch::kNone:
-      return "none";
-  }
-  return "?";
-}
-
 std::string Describe(const StabilityEvent& e) {
   char line[320];
   if (e.kind == StabilityKind::kLimit || e.branch == Branch::kNone) {

@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
 #include "core/model/scene_error.h"
-#include "core/solve/shell_model.h"
 #include "support/test_paths.h"
 
 namespace drape {

@@ -1,12 +1,15 @@
-// The layering (README, "Shape of the code"): app → ui → core, core with
-// neither Qt nor VTK, ui/render (the renderer the command line links) with
-// no Qt. Read from the sources' #include lines, so a forbidden include
-// fails here with its file and line, not later as a link error elsewhere.
+// The layering (docs/architecture.md): app → ui → core, core with neither Qt
+// nor VTK, ui/render (the renderer the command line links) with no Qt, and
+// inside core each folder including only the folders below it. Read from the sources' #include
+// lines, so a forbidden include fails here with its file and line, not later as a link error
+// elsewhere.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace drape {
@@ -49,6 +52,49 @@ std::string Lines(const std::vector<std::string>& lines) {
 TEST(IncludeGraph, CoreHasNoQtNoVtkAndNothingAboveIt) {
   const auto found = ForbiddenIncludes("core", {"\"ui/", "\"app/", "<Q", "<vtk", "\"vtk"});
   EXPECT_TRUE(found.empty()) << Lines(found);
+}
+
+// core's folders, each with the folders it may include (besides itself):
+// the order of the static libraries in core/CMakeLists.txt.
+const std::vector<std::pair<std::string, std::vector<std::string>>>& CoreLayers() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> layers = {
+      {"geometry", {}},
+      {"model", {}},
+      {"mechanics", {}},
+      {"linalg", {}},
+      {"fe", {"model", "mechanics"}},
+      {"contact", {"fe", "geometry", "model"}},
+      {"continuation", {"contact", "fe", "linalg"}},
+      {"solve", {"continuation", "contact", "fe", "mechanics", "model"}},
+      {"io", {"solve", "fe", "mechanics", "model"}},
+  };
+  return layers;
+}
+
+TEST(IncludeGraph, EachCoreFolderIncludesOnlyTheFoldersBelowIt) {
+  std::vector<std::string> folders;
+  for (const auto& [folder, below] : CoreLayers()) folders.push_back(folder);
+  for (const auto& [folder, below] : CoreLayers()) {
+    std::vector<std::string> forbidden;
+    for (const std::string& other : folders)
+      if (other != folder && std::find(below.begin(), below.end(), other) == below.end())
+        forbidden.push_back("\"core/" + other + "/");
+    const auto found = ForbiddenIncludes("core/" + folder, forbidden);
+    EXPECT_TRUE(found.empty()) << "core/" << folder << " includes a folder above it:\n"
+                               << Lines(found);
+  }
+}
+
+TEST(IncludeGraph, EveryCoreFolderHasItsLayer) {
+  for (const auto& entry : fs::directory_iterator(fs::path(DRAPE_SOURCE_DIR) / "core")) {
+    if (!entry.is_directory()) continue;
+    const std::string name = entry.path().filename().string();
+    const bool listed = std::any_of(CoreLayers().begin(),
+                                    CoreLayers().end(),
+                                    [&](const auto& layer) { return layer.first == name; });
+    EXPECT_TRUE(listed) << "core/" << name << " is in no layer: add it to CoreLayers() and "
+                        << "core/CMakeLists.txt";
+  }
 }
 
 TEST(IncludeGraph, TheRendererHasNoQtAndTheWorkbenchNoApp) {

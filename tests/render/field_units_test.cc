@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/mechanics/director.h"
+#include "support/display_required.h"
 #include "support/strip_scene.h"
 #include "ui/render/display.h"
 #include "ui/render/frame_renderer.h"
@@ -23,9 +24,7 @@ namespace {
 
 class FieldUnitsTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
-  }
+  void SetUp() override { DRAPE_REQUIRE_DISPLAY(); }
 };
 
 // The cantilever strip bent to θ(s) = 15 s²/L: curvature from 0 at the

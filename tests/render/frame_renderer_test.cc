@@ -17,6 +17,7 @@
 #include "core/io/scene_reader.h"
 #include "core/mechanics/director.h"
 #include "core/solve/shell_solver.h"
+#include "support/display_required.h"
 #include "support/strip_scene.h"
 #include "support/test_paths.h"
 #include "ui/render/display.h"
@@ -69,9 +70,7 @@ Eigen::Vector2d Project(FrameRenderer& r, const Eigen::Vector3d& x) {
 
 class FrameRendererTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
-  }
+  void SetUp() override { DRAPE_REQUIRE_DISPLAY(); }
 };
 
 // A 20 × 10 cm sheet, flat, seen from the top.

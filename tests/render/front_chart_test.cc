@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "support/display_required.h"
 #include "ui/render/display.h"
 
 namespace drape {
@@ -50,7 +51,7 @@ Pixels Read(const fs::path& png) {
 class FrontChart : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (const std::string problem = DisplayProblem(); !problem.empty()) GTEST_SKIP() << problem;
+    DRAPE_REQUIRE_DISPLAY();
     png_ = fs::temp_directory_path() / ("drape-front-" + std::to_string(getpid()) + ".png");
   }
   void TearDown() override { fs::remove(png_); }

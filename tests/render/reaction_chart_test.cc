@@ -17,6 +17,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "support/display_required.h"
 #include "ui/render/display.h"
 
 namespace drape {
@@ -72,7 +73,7 @@ Picture Read(const fs::path& png) {
 class ReactionChart : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (const std::string problem = DisplayProblem(); !problem.empty()) GTEST_SKIP() << problem;
+    DRAPE_REQUIRE_DISPLAY();
     png_ = fs::temp_directory_path() / ("drape-reactions-" + std::to_string(getpid()) + ".png");
   }
   void TearDown() override { fs::remove(png_); }

@@ -19,8 +19,8 @@
 #include <regex>
 #include <sstream>
 
+#include "core/fe/element_fields.h"
 #include "core/mechanics/director.h"
-#include "core/solve/element_fields.h"
 #include "support/strip_scene.h"
 
 namespace drape {

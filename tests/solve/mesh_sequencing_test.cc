@@ -9,10 +9,10 @@
 #include <cmath>
 #include <string>
 
+#include "core/fe/shell_model.h"
 #include "core/mechanics/director.h"
 #include "core/model/scene_error.h"
 #include "core/solve/mesh_sequencing.h"
-#include "core/solve/shell_model.h"
 #include "support/strip_scene.h"
 
 namespace drape {

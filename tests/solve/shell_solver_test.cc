@@ -10,13 +10,13 @@
 #include <cstdio>
 #include <functional>
 
+#include "core/continuation/equilibrium_system.h"
+#include "core/continuation/newton_solver.h"
+#include "core/fe/dof_map.h"
 #include "core/io/scene_reader.h"
 #include "core/mechanics/director.h"
 #include "core/model/imperfection.h"
 #include "core/model/scene_error.h"
-#include "core/solve/dof_map.h"
-#include "core/solve/equilibrium_system.h"
-#include "core/solve/newton_solver.h"
 #include "support/test_paths.h"
 
 namespace drape {

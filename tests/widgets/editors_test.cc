@@ -28,11 +28,11 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "core/fe/path_handles.h"
+#include "core/fe/prescribed_motion.h"
+#include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
 #include "core/model/obstacle_anchor.h"
-#include "core/solve/path_handles.h"
-#include "core/solve/prescribed_motion.h"
-#include "core/solve/shell_model.h"
 #include "support/test_paths.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"

@@ -17,6 +17,7 @@
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 
+#include "support/display_required.h"
 #include "ui/render/display.h"
 #include "ui/widgets/vtk_viewport.h"
 
@@ -65,9 +66,7 @@ class Widgets : public ::testing::Test {
       std::filesystem::remove_all(data, ignored);
     });
   }
-  void SetUp() override {
-    if (!DisplayProblem().empty()) GTEST_SKIP() << "no display: run under xvfb-run -a";
-  }
+  void SetUp() override { DRAPE_REQUIRE_DISPLAY(); }
 };
 
 }  // namespace drape

@@ -15,7 +15,7 @@
 #include <memory>
 #include <set>
 
-#include "core/solve/shell_model.h"
+#include "core/fe/shell_model.h"
 #include "support/test_paths.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/preview_controller.h"

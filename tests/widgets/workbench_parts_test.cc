@@ -13,8 +13,8 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 #include "support/test_paths.h"
 #include "ui/widgets/document_controller.h"
 #include "ui/widgets/drag_handles.h"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "core/fe/shell_model.h"
+#include "core/fe/shell_state.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
-#include "core/solve/shell_state.h"
 #include "ui/render/frame_renderer.h"
 
 namespace drape {

@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "core/fe/element_fields.h"
 #include "core/model/unit_system.h"
-#include "core/solve/element_fields.h"
 
 namespace drape {
 

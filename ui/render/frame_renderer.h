@@ -21,11 +21,11 @@
 #include <string_view>
 #include <vector>
 
+#include "core/fe/element_fields.h"
+#include "core/fe/shell_model.h"
+#include "core/fe/shell_state.h"
 #include "core/model/scene.h"
 #include "core/model/unit_system.h"
-#include "core/solve/element_fields.h"
-#include "core/solve/shell_model.h"
-#include "core/solve/shell_state.h"
 
 class vtkRenderer;
 class vtkRenderWindow;

@@ -6,8 +6,8 @@
 
 #include <vtkSmartPointer.h>
 
+#include "core/fe/shell_state.h"
 #include "core/model/mesh.h"
-#include "core/solve/shell_state.h"
 
 class vtkActor;
 

@@ -17,9 +17,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/fe/path_handles.h"
 #include "core/model/overloaded.h"
 #include "core/model/vec3_eigen.h"
-#include "core/solve/path_handles.h"
 
 namespace drape {
 namespace {

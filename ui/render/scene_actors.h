@@ -8,9 +8,9 @@
 
 #include <vector>
 
+#include "core/fe/shell_model.h"
 #include "core/model/mesh.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 
 class vtkPolyData;
 

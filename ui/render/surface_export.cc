@@ -22,7 +22,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/solve/element_fields.h"
+#include "core/fe/element_fields.h"
 
 namespace drape {
 namespace fs = std::filesystem;

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/solve/shell_model.h"
-#include "core/solve/shell_state.h"
+#include "core/fe/shell_model.h"
+#include "core/fe/shell_state.h"
 
 namespace drape {
 

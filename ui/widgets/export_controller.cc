@@ -6,7 +6,7 @@
 #include <atomic>
 #include <exception>
 
-#include "core/solve/path_handles.h"
+#include "core/fe/path_handles.h"
 #include "ui/render/animation.h"
 #include "ui/render/surface_export.h"
 

@@ -10,8 +10,8 @@
 #include <memory>
 #include <vector>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/step_state.h"
 #include "ui/render/frame_renderer.h"
 

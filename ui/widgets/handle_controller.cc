@@ -4,9 +4,9 @@
 
 #include <vector>
 
+#include "core/fe/path_handles.h"
+#include "core/fe/prescribed_motion.h"
 #include "core/model/obstacle_anchor.h"
-#include "core/solve/path_handles.h"
-#include "core/solve/prescribed_motion.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/live_drag.h"
 #include "ui/widgets/path_handles.h"

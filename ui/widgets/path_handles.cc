@@ -8,7 +8,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
-#include "core/solve/path_handles.h"
+#include "core/fe/path_handles.h"
 #include "ui/widgets/drag_handles.h"
 
 namespace drape {

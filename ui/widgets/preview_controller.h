@@ -21,8 +21,8 @@
 #include <functional>
 #include <memory>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/solve_summary.h"
 #include "core/solve/step_state.h"
 #include "ui/widgets/meta_types.h"

@@ -13,9 +13,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "core/fe/shell_model.h"
 #include "core/model/unit_system.h"
 #include "core/model/units.h"
-#include "core/solve/shell_model.h"
 
 class QCheckBox;
 class QComboBox;

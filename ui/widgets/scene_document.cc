@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
-#include "core/solve/shell_model.h"
 
 namespace drape {
 

@@ -16,8 +16,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
-#include "core/solve/shell_model.h"
 
 namespace drape {
 

@@ -12,9 +12,9 @@
 #include <memory>
 #include <vector>
 
+#include "core/fe/shell_model.h"
 #include "core/model/scene.h"
 #include "core/model/unit_system.h"
-#include "core/solve/shell_model.h"
 #include "core/solve/step_state.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/export_controller.h"

@@ -1,0 +1,49 @@
+#include "core/contact/contact_setup.h"
+
+#include <string>
+#include <vector>
+
+#include "core/model/obstacle_geometry.h"
+#include "core/model/scene_error.h"
+
+namespace drape {
+
+bool HoldsRestrainRigidMotion(const ShellModel& model, const DofMap& dofs) {
+  std::vector<Eigen::Vector3d> held;
+  bool clamped = false;
+  for (int i = 0; i < model.NodeCount(); ++i)
+    if (dofs.IsFixed(kDofsPerNode * i)) {
+      held.push_back(model.reference.positions.row(i).transpose());
+      clamped = clamped || dofs.IsFixed(kDofsPerNode * i + 3);
+    }
+  if (held.size() < 2) return false;
+  if (clamped) return true;
+  const double tiny = 1e-12 * model.characteristic_length * model.characteristic_length;
+  for (size_t a = 1; a < held.size(); ++a)
+    for (size_t b = a + 1; b < held.size(); ++b)
+      if ((held[a] - held[0]).cross(held[b] - held[0]).norm() > tiny) return true;
+  return false;
+}
+
+std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellModel& model) {
+  if (scene.obstacles.empty()) return nullptr;
+  std::vector<NamedObstacle> obstacles;
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    obstacles.push_back(
+        {scene.obstacles[i].name,
+         MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]")});
+  const double penalty =
+      scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
+  const double friction = scene.contact ? scene.contact->friction : 0.0;
+  auto contact = std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0, friction);
+  // A fabric that starts inside an obstacle has no meaningful first step.
+  const auto inside = contact->Penetrations(model.reference, 1e-3 * model.thickness);
+  if (!inside.empty()) {
+    std::string message = "the fabric starts inside an obstacle: " + inside.front();
+    if (inside.size() > 1) message += " (and " + std::to_string(inside.size() - 1) + " more nodes)";
+    throw SceneError("obstacles", message + "; raise the fabric or move the obstacle");
+  }
+  return contact;
+}
+
+}  // namespace drape

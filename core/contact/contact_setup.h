@@ -1,0 +1,26 @@
+// What a scene's obstacles and holds mean for contact: the NodeContact a
+// run uses (null without obstacles), and whether contact alone must keep the
+// fabric from moving as a rigid body (then it is stabilised).
+#pragma once
+
+#include <memory>
+
+#include "core/contact/node_contact.h"
+#include "core/fe/dof_map.h"
+#include "core/fe/shell_model.h"
+#include "core/model/scene.h"
+
+namespace drape {
+
+// The scene's obstacles with its penalty ("auto": AutoPenalty) and friction.
+// Throws SceneError ("obstacles") when the reference fabric starts inside an
+// obstacle, naming the deepest node, its depth and the obstacle; and for an
+// unreadable or open mesh obstacle ("obstacles[i].mesh.file").
+std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellModel& model);
+
+// Whether the held nodes alone stop every rigid motion: three of them not on
+// one line (a clamp fixes position and director, so one clamped node with a
+// second held node also does).
+bool HoldsRestrainRigidMotion(const ShellModel& model, const DofMap& dofs);
+
+}  // namespace drape

@@ -1,0 +1,134 @@
+// Adaptive arc-length continuation (Schweizerhof & Wriggers 1986; the paper's
+// constraint with ψ scaling). Each step moves a distance Δs along the
+// equilibrium path in (u, λ) space,
+//
+//   ‖Δu‖² + ψ_e² Δλ² = Δs²,   ψ_e² = ψ² + ‖∂u_p/∂λ‖²,
+//
+// over the free nodes' translations, the prescribed motion's speed folded
+// into ψ. Every iteration solves K twice (bordered update): Δu_H = −K⁻¹R and
+// Δu_I = K⁻¹F₀ with F₀ = ∂F_ext/∂λ − ∂F_int/∂λ (for prescribed motion the
+// paper's −∂P/∂λ, −K_fp ∂u_p/∂λ); δλ solves the constraint's quadratic and
+// the root that keeps going forward is taken. Limit points (where λ turns
+// back) and bifurcations pass; a step that would overshoot λ = 1 lands on it
+// under load control.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "core/continuation/cancellation_token.h"
+#include "core/continuation/convergence.h"
+#include "core/continuation/equilibrium_system.h"
+#include "core/continuation/newton_solver.h"
+#include "core/fe/stage_loading.h"
+
+namespace drape {
+
+// The last converged step's direction: to continue forward, not back.
+struct PathDirection {
+  Eigen::VectorXd translation;  // Δu over the free DOFs, rotations zeroed
+  double lambda = 0;            // Δλ
+};
+
+struct ContinuationStep {
+  NewtonOutcome::Status status = NewtonOutcome::Status::kDiverged;
+  std::string reason;
+  int iterations = 0;
+  std::vector<double> residuals;
+  Convergence convergence = Convergence::kNotYet;  // how the last iteration was judged
+  int negative_pivots = 0;
+  double lambda = 0;      // reached
+  double arc_length = 0;  // Δs actually used
+  bool landed = false;    // ended exactly on the target λ under load control
+  PathDirection direction;
+};
+
+class ArcLengthStepper {
+ public:
+  ArcLengthStepper(EquilibriumSystem& system,
+                   const StageLoading& loading,
+                   const NewtonSettings& newton,
+                   double psi);
+
+  // One step from the converged (state, λ) of length `arc_length`, or, when
+  // that is ≤ 0, of the length that makes the predictor's Δλ equal
+  // `first_increment`. Lands on λ = `target` when it would pass it. On
+  // failure the caller restores the state.
+  ContinuationStep Step(ShellState& state,
+                        double lambda,
+                        double arc_length,
+                        double first_increment,
+                        const PathDirection* previous,
+                        double target,
+                        const CancellationToken* cancel);
+
+  // On a positive definite tangent the predictor goes to larger λ (on by
+  // default; see Step). Off once a branch switch has landed behind its
+  // bifurcation and the way forward led back to it: that branch bends
+  // back, and forward would only meet the same bifurcation again.
+  void SetDefiniteGoesForward(bool on) { definite_goes_forward_ = on; }
+
+  // A load-controlled step to λ = target (tangent predictor, then Newton).
+  ContinuationStep StepTo(ShellState& state,
+                          double lambda,
+                          double target,
+                          const CancellationToken* cancel);
+
+  // A step onto a secondary branch (Wagner & Wriggers 1988): predictor
+  // along `mode` (over the free DOFs), λ unchanged; corrector on the
+  // hyperplane n·Δq = amplitude, λ free, where n is the mode in the metric
+  // that weighs a rotation θ as a translation θ·`rotation_length` (modes of
+  // thin fabric can be nearly all rotation). The hyperplane excludes the
+  // primary path, which runs orthogonal to the mode. `amplitude` [m] is the
+  // step's length in that metric; residuals are judged against the force
+  // level (the step adds no load).
+  ContinuationStep StepAlong(ShellState& state,
+                             double lambda,
+                             const Eigen::VectorXd& mode,
+                             double amplitude,
+                             double rotation_length,
+                             const CancellationToken* cancel);
+
+  // The length of a step's secant in the arc-length metric, √(‖Δu‖² +
+  // ψ_e²Δλ²), ψ_e at the state it ended at.
+  double Length(const PathDirection& secant, double lambda, const ShellState& state) const;
+
+  // Which way λ goes along the path at a converged (state, λ), forward being
+  // the side of `secant` (the step that arrived there): +1 rising, −1
+  // falling. From the tangent (K⁻¹F₀, 1); a flip between two states means a
+  // limit point lies between them. Reuses the state's factorisation.
+  int LambdaDirection(const ShellState& state, double lambda, const PathDirection& secant);
+
+ private:
+  // Assembles at (state, λ); returns F₀ over the free DOFs.
+  Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);
+  Eigen::VectorXd Translations(const Eigen::VectorXd& free) const;
+  // The fraction of an update (`full`, 5 per node, with λ moving from
+  // `lambda` by `delta`) that keeps the fabric's layers apart, the held
+  // nodes' prescribed motion included (EquilibriumSystem::StepBound).
+  double CollisionFreeFraction(const ShellState& state,
+                               const Eigen::VectorXd& full,
+                               double lambda,
+                               double delta) const;
+  // Applies a corrector's (Δq, δλ), both first cut to the part that keeps
+  // the fabric's layers apart (CollisionFreeFraction): the state and its
+  // prescribed motion move on, the step's accumulated translations and Δλ
+  // grow. Returns max|Δu|.
+  double Correct(Eigen::VectorXd& correction,
+                 double& delta,
+                 ShellState& state,
+                 double& lambda,
+                 Eigen::VectorXd& translations,
+                 double& lambda_increment) const;
+
+  EquilibriumSystem& system_;
+  const StageLoading& loading_;
+  NewtonSettings newton_;
+  double psi_;
+  bool definite_goes_forward_ = true;
+  Eigen::VectorXd translation_mask_;  // 1 on free translation DOFs, 0 on rotations
+};
+
+}  // namespace drape

@@ -1,0 +1,40 @@
+// A change of the tangent's inertia along a path: limit points, bifurcations
+// and the branch taken.
+#pragma once
+
+namespace drape {
+
+// What the number of negative pivots changing between two converged steps
+// means: a limit point (λ turns along the path: snap-through, snap-back) or a
+// bifurcation (the count changes while λ keeps its direction).
+enum class StabilityKind { kLimit, kBifurcation };
+// Which way the path went on from a bifurcation.
+enum class Branch {
+  kFundamental,  // on along the primary path (solver.branching: fundamental)
+  kStable,       // switched to a secondary branch with the pivots of before
+  kNone,         // not a bifurcation (a limit point), or no branch was found
+};
+const char* ToString(StabilityKind kind);  // "limit", "bifurcation"
+const char* ToString(Branch branch);       // "fundamental", "stable", "none"
+
+// A change in the number of negative pivots between two converged steps: the
+// path crossed a limit or bifurcation point.
+struct StabilityEvent {
+  int stage = -1;
+  int step = 0;       // the first step after the change (on the branch taken)
+  double lambda = 0;  // where it happened (a located bifurcation: its λ)
+  int negative_pivots_before = 0;
+  int negative_pivots_after = 0;  // on the path the step took (the branch when switched)
+  StabilityKind kind = StabilityKind::kLimit;
+  Branch branch = Branch::kNone;
+  // Bifurcations: the pivots on the primary path just past the point, how
+  // many critical modes, the largest nodal translation of the switch onto the
+  // branch [m], and what locating and switching cost.
+  int negative_pivots_fundamental = 0;
+  int modes = 0;
+  double mode_max_displacement = 0;
+  int switch_iterations = 0;
+  double switch_s = 0;
+};
+
+}  // namespace drape
