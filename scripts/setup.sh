@@ -56,9 +56,18 @@ drape_install_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing
 }
 
+# ccache keys on paths relative to the checkout, so a fresh clone elsewhere
+# (CI's) reuses what an earlier build of the same sources compiled; without
+# hashing the build folder, the sanitizer build's debug info does not stop it.
+drape_ccache_for() {
+  export CCACHE_BASEDIR="$1"
+  export CCACHE_NOHASHDIR=1
+}
+
 drape_build() {
   local root
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  drape_ccache_for "$root"
   local jobs
   jobs=$(nproc 2>/dev/null || echo 2)
   if [ ! -f "$root/build/CMakeCache.txt" ]; then

@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 source scripts/setup.sh
 drape_install_packages
 jobs=$(nproc 2>/dev/null || echo 2)
+drape_ccache_for "$PWD"
 if [ ! -f build-asan/CMakeCache.txt ]; then
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRAPE_SANITIZE=ON \
     -DDRAPE_WITH_GUI=OFF -DDRAPE_BUILD_BENCHMARKS=OFF
