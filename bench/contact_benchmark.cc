@@ -124,7 +124,7 @@ void BM_SelfContactEvaluate(benchmark::State& bench) {
   settings.activation = 0.5 * settings.offset;
   settings.stiffness = 1e-3;
   settings.exclusion = 0.01;
-  const SelfContact contact(mesh, settings);
+  SelfContact contact(mesh, settings);
   contact.Evaluate(x, true);  // makes the list
   int active = 0;
   for (auto _ : bench) active = contact.Evaluate(x, true).active_pairs;

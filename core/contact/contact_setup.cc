@@ -1,5 +1,6 @@
 #include "core/contact/contact_setup.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,28 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
     throw SceneError("obstacles", message + "; raise the fabric or move the obstacle");
   }
   return contact;
+}
+
+double LayerExclusion(const ShellModel& model, double element_size) {
+  return std::max(4 * element_size, 10 * model.thickness);
+}
+
+SelfContactSettings SelfContactSettingsFor(const Scene& scene,
+                                           const ShellModel& model,
+                                           double exclusion) {
+  SelfContactSettings s;
+  s.offset =
+      scene.contact && scene.contact->thickness ? *scene.contact->thickness : model.thickness;
+  s.activation = 0.5 * s.offset;
+  s.exclusion = exclusion;
+  // Stiffness: the barrier halfway into its band carries ten times a node's
+  // weight (its force there is κ·1.19ŝ·2(ξ + d̂/2), b'(ŝ/2) = −1.19ŝ); closer,
+  // the log barrier grows without bound.
+  const double s_hat = 2 * s.offset * s.activation + s.activation * s.activation;
+  const double node_weight = model.total_weight.norm() / std::max(1, model.NodeCount());
+  s.stiffness =
+      10 * std::max(node_weight, 1e-12) / (2.39 * s_hat * (s.offset + 0.5 * s.activation));
+  return s;
 }
 
 }  // namespace drape

@@ -1,11 +1,13 @@
 // What a scene's obstacles and holds mean for contact: the NodeContact a
-// run uses (null without obstacles), and whether contact alone must keep the
-// fabric from moving as a rigid body (then it is stabilised).
+// run uses (null without obstacles), whether contact alone must keep the
+// fabric from moving as a rigid body (then it is stabilised), and the
+// barrier that keeps the fabric's layers apart.
 #pragma once
 
 #include <memory>
 
 #include "core/contact/node_contact.h"
+#include "core/contact/self_contact.h"
 #include "core/fe/dof_map.h"
 #include "core/fe/shell_model.h"
 #include "core/model/scene.h"
@@ -22,5 +24,18 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
 // one line (a clamp fixes position and director, so one clamped node with a
 // second held node also does).
 bool HoldsRestrainRigidMotion(const ShellModel& model, const DofMap& dofs);
+
+// Parts of the fabric count as distinct layers when farther apart at rest
+// than a few elements (a fold's hinge bends them close) and than ten
+// thicknesses [m]. `element_size`: the mean element edge.
+double LayerExclusion(const ShellModel& model, double element_size);
+
+// The self-contact barrier of a scene (contact.self): the layers kept
+// contact.thickness apart (default the fabric's), the barrier acting over
+// half that again, and stiff enough that halfway into its band it carries
+// ten times a node's weight.
+SelfContactSettings SelfContactSettingsFor(const Scene& scene,
+                                           const ShellModel& model,
+                                           double exclusion);
 
 }  // namespace drape

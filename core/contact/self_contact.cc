@@ -31,7 +31,7 @@ bool SelfContact::ListCovers(const Positions& x, double motion) const {
   return 2 * (MotionSpread(x - list_positions_) + motion) <= list_margin_;
 }
 
-SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessian) const {
+SelfContactEvaluation SelfContact::Evaluate(const Positions& x, bool with_hessian) {
   SelfContactEvaluation out;
   out.gradient = Eigen::VectorXd::Zero(3 * x.rows());
   if (!ListCovers(x, 0)) {

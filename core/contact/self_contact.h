@@ -48,7 +48,8 @@ class SelfContact {
   SelfContact(const Mesh& mesh, const SelfContactSettings& settings);
 
   // Not thread-safe: it updates the list of pairs.
-  SelfContactEvaluation Evaluate(const Positions& x, bool with_hessian) const;
+  // Not const: it renews the kept pair list when x has moved beyond it.
+  SelfContactEvaluation Evaluate(const Positions& x, bool with_hessian);
 
   // The largest t ∈ [0, 1] such that x + τ dx keeps every pair outside the
   // offset for τ ≤ t (conservatively: it stops short).
@@ -70,8 +71,8 @@ class SelfContact {
   // The list's radius beyond the reach [m]: twice the reach or an element,
   // whichever is larger.
   double list_margin_;
-  mutable Positions list_positions_;
-  mutable ProximityPairs list_;
+  Positions list_positions_;
+  ProximityPairs list_;
   SelfProximity proximity_;
   Positions rest_;
 };

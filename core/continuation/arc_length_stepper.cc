@@ -1,8 +1,46 @@
 #include "core/continuation/arc_length_stepper.h"
 
 #include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
 
 namespace drape {
+namespace {
+
+// The corrector's outcome in a step that already counted its predictor's
+// solve.
+void TakeOutcome(const NewtonOutcome& newton, ContinuationStep& out) {
+  out.status = newton.status;
+  out.reason = newton.reason;
+  out.iterations += newton.iterations;
+  out.residuals = newton.residuals;
+  out.convergence = newton.convergence;
+  out.negative_pivots = newton.negative_pivots;
+}
+
+// δλ from ‖a + t_h + δλ t_i‖² + ψ_e²(b + δλ)² = Δs²: the root whose new
+// increment turns least from the current one (a, b); where there is no
+// root, the δλ that comes as close to the sphere as possible.
+double SphereRoot(const Eigen::VectorXd& a,
+                  double b,
+                  const Eigen::VectorXd& t_h,
+                  const Eigen::VectorXd& t_i,
+                  double psi2,
+                  double ds) {
+  const Eigen::VectorXd p = a + t_h;
+  const double a1 = t_i.squaredNorm() + psi2;
+  const double a2 = 2 * (t_i.dot(p) + psi2 * b);
+  const double a3 = p.squaredNorm() + psi2 * b * b - ds * ds;
+  const double disc = a2 * a2 - 4 * a1 * a3;
+  if (disc < 0) return -a2 / (2 * a1);
+  const double q = -0.5 * (a2 + std::copysign(std::sqrt(disc), a2));
+  const double r1 = q / a1, r2 = q != 0 ? a3 / q : r1;
+  auto forward = [&](double x) { return a.dot(p + x * t_i) + psi2 * b * (b + x); };
+  return forward(r1) >= forward(r2) ? r1 : r2;
+}
+
+}  // namespace
 
 ArcLengthStepper::ArcLengthStepper(EquilibriumSystem& system,
                                    const StageLoading& loading,
@@ -99,16 +137,13 @@ ContinuationStep ArcLengthStepper::StepTo(ShellState& state,
   return out;
 }
 
-ContinuationStep ArcLengthStepper::Step(ShellState& state,
-                                        double lambda,
-                                        double arc_length,
-                                        double first_increment,
-                                        const PathDirection* previous,
-                                        double target,
-                                        const CancellationToken* cancel) {
+std::optional<ContinuationStep> ArcLengthStepper::Predict(ShellState& state,
+                                                          const StepRequest& request,
+                                                          SphereStep& sphere,
+                                                          const CancellationToken* cancel) {
   const DofMap& dofs = system_.dofs();
-  const ShellState start = state;
-  const double lambda_start = lambda;
+  double lambda = request.lambda;
+  const PathDirection* previous = request.previous;
   const double speed = loading_.PrescribedSpeed(lambda, state);
   const double psi2 = psi_ * psi_ + speed * speed;
 
@@ -118,7 +153,7 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   Eigen::VectorXd u_i = system_.Solve(f0);
   Eigen::VectorXd t_i = Translations(u_i);
   const double tangent_norm = std::sqrt(t_i.squaredNorm() + psi2);
-  double ds = arc_length > 0 ? arc_length : first_increment * tangent_norm;
+  double ds = request.arc_length > 0 ? request.arc_length : request.first_increment * tangent_norm;
   double dl = ds / tangent_norm;
   // Forward: the side on which the tangent agrees with the last step. On a
   // positive definite tangent the path is a function of λ (implicit
@@ -130,8 +165,8 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
   // part along a path it never takes.
   if (previous && previous->translation.dot(t_i) + psi2 * previous->lambda < 0) dl = -dl;
   if (definite_goes_forward_ && tangent.negative_pivots == 0) dl = std::abs(dl);
-  if (dl > 0 && lambda + dl >= target - 1e-12) {
-    ContinuationStep landing = StepTo(state, lambda, target, cancel);
+  if (dl > 0 && lambda + dl >= request.target - 1e-12) {
+    ContinuationStep landing = StepTo(state, lambda, request.target, cancel);
     landing.arc_length = ds;
     return landing;
   }
@@ -142,90 +177,89 @@ ContinuationStep ArcLengthStepper::Step(ShellState& state,
     ds *= t;
     dl *= t;
   }
-  ContinuationStep out;
-  out.arc_length = ds;
-  out.iterations = 1;                   // the predictor's solve, as the paper counts it
-  Eigen::VectorXd a = dl * t_i;         // accumulated free translations of the step
-  double b = dl;                        // accumulated Δλ
-  const Eigen::VectorXd predicted = a;  // the predictor's direction, to tell forward from back
-  const double predicted_lambda = b;
   ApplyIncrement(dofs.Expand(dl * u_i), state);
   lambda += dl;
   loading_.Place(lambda, state);
-  const double reference = std::abs(dl) * f0.norm();
-  double last_correction = INFINITY;
+  sphere.lambda = lambda;
+  sphere.target = request.target;
+  sphere.ds = ds;
+  sphere.psi2 = psi2;
+  sphere.reference = std::abs(dl) * f0.norm();
+  sphere.a = dl * t_i;
+  sphere.b = dl;
+  sphere.predicted = sphere.a;
+  sphere.predicted_lambda = dl;
+  sphere.f0 = std::move(f0);
+  sphere.u_i = std::move(u_i);
+  sphere.t_i = std::move(t_i);
+  return std::nullopt;
+}
 
-  for (int it = 0;; ++it) {
-    if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done) {
-      out.status = v.status;
-      out.reason = v.reason;
-      return out;
-    }
-    f0 = AssembleWithRate(state, lambda);
-    const Eigen::VectorXd f_ext = loading_.External(lambda, state);
-    const Eigen::VectorXd r = system_.Residual(f_ext);
-    const IterationVerdict v =
-        JudgeIteration(newton_,
-                       r.norm(),
-                       newton_.relative_to_force_level ? system_.ForceLevel(f_ext) : reference,
-                       system_.RoundOffLevel(state),
-                       last_correction,
-                       it,
-                       out.residuals,
-                       out.convergence);
-    if (v.done && v.status != NewtonOutcome::Status::kConverged) {
-      out.status = v.status;
-      out.reason = v.reason;
-      return out;
-    }
-    if (v.done) {
-      if (lambda > target + 1e-12) {
-        // Converged past the stage's end: redo the step landing on it.
-        state = start;
-        loading_.Place(lambda_start, state);
-        ContinuationStep landing = StepTo(state, lambda_start, target, cancel);
-        landing.arc_length = ds;
-        return landing;
-      }
-      // Near a bifurcation the corrector can wander onto the part of the path
-      // behind the step; that is not progress: cut the step instead.
-      if (a.dot(predicted) + psi2 * b * predicted_lambda <= 0) {
-        out.status = NewtonOutcome::Status::kDiverged;
-        out.reason = "the corrector converged back along the path";
-        return out;
-      }
-      out.status = NewtonOutcome::Status::kConverged;
-      out.negative_pivots = system_.Factorize().negative_pivots;  // at the converged state
-      out.lambda = lambda;
-      out.direction = {a, b};
-      return out;
-    }
+NewtonOutcome ArcLengthStepper::CorrectOnSphere(ShellState& state,
+                                                SphereStep& sphere,
+                                                bool& overshot,
+                                                const CancellationToken* cancel) {
+  SphereStep& p = sphere;
+  CorrectorRequest corrector;
+  corrector.settings = newton_;
+  corrector.assemble = [&](const ShellState& s, int) {
+    p.f0 = AssembleWithRate(s, p.lambda);
+    const Eigen::VectorXd f_ext = loading_.External(p.lambda, s);
+    return CorrectorRequest::Residual{
+        system_.Residual(f_ext),
+        newton_.relative_to_force_level ? system_.ForceLevel(f_ext) : p.reference};
+  };
+  corrector.correct = [&](const Eigen::VectorXd& r, ShellState& s) {
     // Bordered update: two solves with one factorisation.
-    system_.Factorize();
     const Eigen::VectorXd u_h = system_.Solve(-r);
-    u_i = system_.Solve(f0);
+    p.u_i = system_.Solve(p.f0);
     const Eigen::VectorXd t_h = Translations(u_h);
-    t_i = Translations(u_i);
-    // δλ from ‖a + t_h + δλ t_i‖² + ψ_e²(b + δλ)² = Δs².
-    const Eigen::VectorXd p = a + t_h;
-    const double a1 = t_i.squaredNorm() + psi2;
-    const double a2 = 2 * (t_i.dot(p) + psi2 * b);
-    const double a3 = p.squaredNorm() + psi2 * b * b - ds * ds;
-    const double disc = a2 * a2 - 4 * a1 * a3;
-    double delta;
-    if (disc < 0) {
-      delta = -a2 / (2 * a1);  // no root: come as close to the sphere as possible
-    } else {
-      const double q = -0.5 * (a2 + std::copysign(std::sqrt(disc), a2));
-      const double r1 = q / a1, r2 = q != 0 ? a3 / q : r1;
-      // The root whose new increment turns least from the current one.
-      auto forward = [&](double x) { return a.dot(p + x * t_i) + psi2 * b * (b + x); };
-      delta = forward(r1) >= forward(r2) ? r1 : r2;
+    p.t_i = Translations(p.u_i);
+    double delta = SphereRoot(p.a, p.b, t_h, p.t_i, p.psi2, p.ds);
+    Eigen::VectorXd correction = u_h + delta * p.u_i;
+    return Correct(correction, delta, s, p.lambda, p.a, p.b);
+  };
+  overshot = false;
+  corrector.refuse = [&](const ShellState&) -> std::string {
+    if (p.lambda > p.target + 1e-12) {
+      overshot = true;
+      return "converged past the stage's end";
     }
-    Eigen::VectorXd correction = u_h + delta * u_i;
-    last_correction = Correct(correction, delta, state, lambda, a, b);
-    ++out.iterations;
+    // Near a bifurcation the corrector can wander onto the part of the path
+    // behind the step; that is not progress: cut the step instead.
+    if (p.a.dot(p.predicted) + p.psi2 * p.b * p.predicted_lambda <= 0)
+      return "the corrector converged back along the path";
+    return "";
+  };
+  return RunCorrector(system_, state, corrector, cancel);
+}
+
+ContinuationStep ArcLengthStepper::Step(ShellState& state,
+                                        const StepRequest& request,
+                                        const CancellationToken* cancel) {
+  const ShellState start = state;
+  SphereStep sphere;
+  if (std::optional<ContinuationStep> landing = Predict(state, request, sphere, cancel))
+    return *landing;
+  ContinuationStep out;
+  out.arc_length = sphere.ds;
+  out.iterations = 1;  // the predictor's solve, as the paper counts it
+  bool overshot = false;
+  const NewtonOutcome newton = CorrectOnSphere(state, sphere, overshot, cancel);
+  if (overshot) {
+    // Converged past the stage's end: redo the step landing on it.
+    state = start;
+    loading_.Place(request.lambda, state);
+    ContinuationStep landing = StepTo(state, request.lambda, request.target, cancel);
+    landing.arc_length = sphere.ds;
+    return landing;
   }
+  TakeOutcome(newton, out);
+  if (newton.status == NewtonOutcome::Status::kConverged) {
+    out.lambda = sphere.lambda;
+    out.direction = {sphere.a, sphere.b};
+  }
+  return out;
 }
 
 double ArcLengthStepper::Length(const PathDirection& secant,
@@ -272,45 +306,16 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
   double b = 0;                         // accumulated Δλ
   out.iterations = 1;
   out.arc_length = std::abs(amplitude);
-  NewtonSettings judge = newton_;
-  judge.relative_to_force_level = true;
-  double last_correction = INFINITY;
-  for (int it = 0;; ++it) {
-    if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done) {
-      out.status = v.status;
-      out.reason = v.reason;
-      return out;
-    }
-    const Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
-    const Eigen::VectorXd f_ext = loading_.External(lambda, state);
-    const Eigen::VectorXd r = system_.Residual(f_ext);
-    const IterationVerdict v = JudgeIteration(judge,
-                                              r.norm(),
-                                              system_.ForceLevel(f_ext),
-                                              system_.RoundOffLevel(state),
-                                              last_correction,
-                                              it,
-                                              out.residuals,
-                                              out.convergence);
-    if (v.done && v.status != NewtonOutcome::Status::kConverged) {
-      out.status = v.status;
-      out.reason = v.reason;
-      return out;
-    }
-    if (v.done) {
-      if (std::abs(n.dot(q) - amplitude) > 0.5 * std::abs(amplitude)) {
-        out.status = NewtonOutcome::Status::kDiverged;
-        out.reason = "the corrector went back towards the primary path";
-        return out;
-      }
-      out.status = NewtonOutcome::Status::kConverged;
-      out.negative_pivots = system_.Factorize().negative_pivots;
-      out.lambda = lambda;
-      out.direction = {a, b};
-      out.arc_length = Length(out.direction, lambda, state);
-      return out;
-    }
-    system_.Factorize();
+  CorrectorRequest request;
+  request.settings = newton_;
+  request.settings.relative_to_force_level = true;
+  Eigen::VectorXd f0;
+  request.assemble = [&](const ShellState& s, int) {
+    f0 = AssembleWithRate(s, lambda);
+    const Eigen::VectorXd f_ext = loading_.External(lambda, s);
+    return CorrectorRequest::Residual{system_.Residual(f_ext), system_.ForceLevel(f_ext)};
+  };
+  request.correct = [&](const Eigen::VectorXd& r, ShellState& s) {
     const Eigen::VectorXd u_h = system_.Solve(-r);
     const Eigen::VectorXd u_i = system_.Solve(f0);
     // n·(q + u_h + δλ u_i) = amplitude. Where F₀ has no part along the mode
@@ -319,10 +324,23 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
     const double miss = amplitude - n.dot(q + u_h);
     double delta = std::abs(along) > 1e-12 * n.norm() * u_i.norm() ? miss / along : 0.0;
     Eigen::VectorXd correction = u_h + delta * u_i;
-    last_correction = Correct(correction, delta, state, lambda, a, b);
+    const double moved = Correct(correction, delta, s, lambda, a, b);
     q += correction;
-    ++out.iterations;
+    return moved;
+  };
+  request.refuse = [&](const ShellState&) -> std::string {
+    if (std::abs(n.dot(q) - amplitude) > 0.5 * std::abs(amplitude))
+      return "the corrector went back towards the primary path";
+    return "";
+  };
+  const NewtonOutcome newton = RunCorrector(system_, state, request, cancel);
+  TakeOutcome(newton, out);
+  if (newton.status == NewtonOutcome::Status::kConverged) {
+    out.lambda = lambda;
+    out.direction = {a, b};
+    out.arc_length = Length(out.direction, lambda, state);
   }
+  return out;
 }
 
 }  // namespace drape

@@ -15,13 +15,14 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/continuation/cancellation_token.h"
 #include "core/continuation/convergence.h"
 #include "core/continuation/equilibrium_system.h"
-#include "core/continuation/newton_solver.h"
+#include "core/continuation/newton_corrector.h"
 #include "core/fe/stage_loading.h"
 
 namespace drape {
@@ -52,16 +53,19 @@ class ArcLengthStepper {
                    const NewtonSettings& newton,
                    double psi);
 
-  // One step from the converged (state, λ) of length `arc_length`, or, when
-  // that is ≤ 0, of the length that makes the predictor's Δλ equal
-  // `first_increment`. Lands on λ = `target` when it would pass it. On
-  // failure the caller restores the state.
+  // What a step asks for.
+  struct StepRequest {
+    double lambda = 0;      // of the converged state the step starts from
+    double arc_length = 0;  // Δs; ≤ 0: the length whose predictor's Δλ is `first_increment`
+    double first_increment = 0;
+    const PathDirection* previous = nullptr;  // the step that arrived there (null: none)
+    double target = 1.0;                      // λ the step lands on when it would pass it
+  };
+
+  // One step from the converged (state, request.lambda). On failure the
+  // caller restores the state.
   ContinuationStep Step(ShellState& state,
-                        double lambda,
-                        double arc_length,
-                        double first_increment,
-                        const PathDirection* previous,
-                        double target,
+                        const StepRequest& request,
                         const CancellationToken* cancel);
 
   // On a positive definite tangent the predictor goes to larger λ (on by
@@ -102,6 +106,32 @@ class ArcLengthStepper {
   int LambdaDirection(const ShellState& state, double lambda, const PathDirection& secant);
 
  private:
+  // A step on the sphere ‖Δu‖² + ψ_e²Δλ² = Δs² once its predictor is taken.
+  struct SphereStep {
+    double lambda = 0;             // reached so far
+    double target = 1;             // the stage's end
+    double ds = 0;                 // Δs
+    double psi2 = 0;               // ψ_e²: ψ² plus the prescribed motion's speed²
+    double reference = 0;          // ‖R₀‖: the load the predictor added
+    Eigen::VectorXd f0, u_i, t_i;  // F₀, K⁻¹F₀ and its translations
+    Eigen::VectorXd a;             // accumulated free translations of the step
+    double b = 0;                  // accumulated Δλ
+    Eigen::VectorXd predicted;     // the predictor's direction, to tell forward from back
+    double predicted_lambda = 0;
+  };
+  // The tangent predictor of Step from (state, request.lambda), applied to
+  // `state`, `sphere` filled; or, when the predictor reaches the target, the
+  // step that lands on it.
+  std::optional<ContinuationStep> Predict(ShellState& state,
+                                          const StepRequest& request,
+                                          SphereStep& sphere,
+                                          const CancellationToken* cancel);
+  // The corrector on the sphere (bordered Newton, δλ from the sphere's
+  // quadratic). `overshot`: it converged past the stage's end.
+  NewtonOutcome CorrectOnSphere(ShellState& state,
+                                SphereStep& sphere,
+                                bool& overshot,
+                                const CancellationToken* cancel);
   // Assembles at (state, λ); returns F₀ over the free DOFs.
   Eigen::VectorXd AssembleWithRate(const ShellState& state, double lambda);
   Eigen::VectorXd Translations(const Eigen::VectorXd& free) const;

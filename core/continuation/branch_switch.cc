@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/linalg/critical_modes.h"
@@ -35,7 +37,8 @@ bool Locate(ArcLengthStepper& stepper,
   for (int k = 0; k < settings.max_bisections && !located(); ++k) {
     const double mid = 0.5 * (b.lo_s + b.hi_s);
     PathPoint trial{start.state, start.lambda, {}};
-    trial.step = stepper.Step(trial.state, start.lambda, mid, 0.0, previous, 1.0, cancel);
+    trial.step = stepper.Step(
+        trial.state, {.lambda = start.lambda, .arc_length = mid, .previous = previous}, cancel);
     iterations += trial.step.iterations;
     if (Cancelled(trial.step)) return false;
     if (trial.step.status != NewtonOutcome::Status::kConverged) break;  // keep what we have
@@ -53,6 +56,62 @@ bool Locate(ArcLengthStepper& stepper,
 
 double LargestTranslation(const ShellState& from, const ShellState& to) {
   return (to.positions - from.positions).rowwise().norm().maxCoeff();
+}
+
+// What trying the critical modes' branches found.
+struct BranchSearch {
+  std::optional<PathPoint> best;  // the stable branch point taken
+  int unstable = 0;               // branches found whose tangent is not definite either
+  std::string last_failure = "no mode to switch along";
+  int iterations = 0;
+  bool cancelled = false;
+};
+
+// Steps from `at` along each mode in turn, both signs, until one gives a
+// stable branch. An imperfection in the scene decides the sign; without one
+// both are tried and the stable branch that goes on furthest in λ is taken
+// (the other may bend back, towards where the part came from).
+BranchSearch SearchBranches(ArcLengthStepper& stepper,
+                            const PathPoint& at,
+                            const std::vector<CriticalMode>& modes,
+                            int pivots_before,
+                            const BifurcationSettings& settings,
+                            const CancellationToken* cancel) {
+  BranchSearch out;
+  for (const CriticalMode& mode : modes) {
+    const bool imperfect = settings.imperfection.size() == mode.shape.size() &&
+                           mode.shape.dot(settings.imperfection) != 0;
+    const double first_sign = imperfect && mode.shape.dot(settings.imperfection) < 0 ? -1 : 1;
+    for (double sign : {first_sign, -first_sign}) {
+      PathPoint trial{at.state, at.lambda, {}};
+      trial.step = stepper.StepAlong(trial.state,
+                                     at.lambda,
+                                     mode.shape,
+                                     sign * settings.amplitude,
+                                     settings.rotation_length,
+                                     cancel);
+      out.iterations += trial.step.iterations;
+      if (Cancelled(trial.step)) {
+        out.cancelled = true;
+        return out;
+      }
+      if (trial.step.status != NewtonOutcome::Status::kConverged) {
+        out.last_failure = trial.step.reason;
+        continue;
+      }
+      trial.lambda = trial.step.lambda;
+      if (trial.step.negative_pivots > pivots_before) {
+        ++out.unstable;
+        out.last_failure = "the branch along it has " + std::to_string(trial.step.negative_pivots) +
+                           " negative pivot(s) too";
+        continue;
+      }
+      if (!out.best || trial.lambda > out.best->lambda) out.best = std::move(trial);
+      if (imperfect) break;
+    }
+    if (out.best) break;  // the mode nearest zero that has a stable branch
+  }
+  return out;
 }
 
 }  // namespace
@@ -96,46 +155,16 @@ BranchSwitch SwitchBranch(ArcLengthStepper& stepper,
   }
   out.modes = static_cast<int>(modes.size());
 
-  std::string last_failure = "no mode to switch along";
-  int unstable = 0;  // branches found whose tangent is not definite either
-  std::optional<PathPoint> best;
-  for (const CriticalMode& mode : modes) {
-    // An imperfection in the scene decides the sign; without one both are
-    // tried and the stable branch that goes on furthest in λ is taken (the
-    // other may bend back, towards where the part came from).
-    const bool imperfect = settings.imperfection.size() == mode.shape.size() &&
-                           mode.shape.dot(settings.imperfection) != 0;
-    const double first_sign = imperfect && mode.shape.dot(settings.imperfection) < 0 ? -1 : 1;
-    for (double sign : {first_sign, -first_sign}) {
-      PathPoint trial{b.lo.state, b.lo.lambda, {}};
-      trial.step = stepper.StepAlong(trial.state,
-                                     b.lo.lambda,
-                                     mode.shape,
-                                     sign * settings.amplitude,
-                                     settings.rotation_length,
-                                     cancel);
-      out.iterations += trial.step.iterations;
-      if (Cancelled(trial.step)) {
-        out.cancelled = true;
-        out.failure = "cancelled";
-        return finish(out);
-      }
-      if (trial.step.status != NewtonOutcome::Status::kConverged) {
-        last_failure = trial.step.reason;
-        continue;
-      }
-      trial.lambda = trial.step.lambda;
-      if (trial.step.negative_pivots > pivots_before) {
-        ++unstable;
-        last_failure = "the branch along it has " + std::to_string(trial.step.negative_pivots) +
-                       " negative pivot(s) too";
-        continue;
-      }
-      if (!best || trial.lambda > best->lambda) best = std::move(trial);
-      if (imperfect) break;
-    }
-    if (best) break;  // the mode nearest zero that has a stable branch
+  BranchSearch search = SearchBranches(stepper, b.lo, modes, pivots_before, settings, cancel);
+  out.iterations += search.iterations;
+  if (search.cancelled) {
+    out.cancelled = true;
+    out.failure = "cancelled";
+    return finish(out);
   }
+  std::optional<PathPoint>& best = search.best;
+  const int unstable = search.unstable;
+  const std::string& last_failure = search.last_failure;
   if (best) {
     out.switched = true;
     out.kind = Branch::kStable;

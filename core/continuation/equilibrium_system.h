@@ -51,7 +51,7 @@ class EquilibriumSystem {
   // system): its barrier joins the energy, force and tangent, whose pattern
   // grows (and is analysed again) when layers come within reach of parts it
   // does not couple yet.
-  void SetSelfContact(const SelfContact* self_contact) { self_contact_ = self_contact; }
+  void SetSelfContact(SelfContact* self_contact) { self_contact_ = self_contact; }
 
   // The largest fraction of a full increment (5 per node) that keeps the
   // layers apart (1 without self-contact).
@@ -110,7 +110,7 @@ class EquilibriumSystem {
   const ShellModel& model_;
   const DofMap& dofs_;
   const NodeContact* contact_;
-  const SelfContact* self_contact_ = nullptr;
+  SelfContact* self_contact_ = nullptr;
   std::vector<std::pair<int, int>> coupled_;  // node pairs the pattern couples beyond elements
   // Where the self-contact was last evaluated and the smallest distance it
   // found there (+∞ beyond its reach): a step too short to close that gap

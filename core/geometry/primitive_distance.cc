@@ -25,8 +25,9 @@ double SegmentParameter(const V3& p, const V3& a, const V3& b) {
 PointTriangleDistance PointTriangle(const V3& p, const V3& a, const V3& b, const V3& c) {
   PointTriangleDistance out;
   const V3 ab = b - a, ac = c - a, ap = p - a;
-  auto finish = [&](double u, double v, double w) {
+  auto finish = [&](double u, double v, double w, TriangleRegion region) {
     out.barycentric = V3(u, v, w);
+    out.region = region;
     out.squared = (p - (u * a + v * b + w * c)).squaredNorm();
     return out;
   };
@@ -37,36 +38,36 @@ PointTriangleDistance PointTriangle(const V3& p, const V3& a, const V3& b, const
     const double d_ab = (p - (a + s_ab * ab)).squaredNorm();
     const double d_bc = (p - (b + s_bc * (c - b))).squaredNorm();
     const double d_ca = (p - (c + s_ca * (a - c))).squaredNorm();
-    if (d_ab <= d_bc && d_ab <= d_ca) return finish(1 - s_ab, s_ab, 0);
-    if (d_bc <= d_ca) return finish(0, 1 - s_bc, s_bc);
-    return finish(s_ca, 0, 1 - s_ca);
+    if (d_ab <= d_bc && d_ab <= d_ca) return finish(1 - s_ab, s_ab, 0, TriangleRegion::kEdge0);
+    if (d_bc <= d_ca) return finish(0, 1 - s_bc, s_bc, TriangleRegion::kEdge1);
+    return finish(s_ca, 0, 1 - s_ca, TriangleRegion::kEdge2);
   }
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return finish(1, 0, 0);  // vertex a
+  if (d1 <= 0 && d2 <= 0) return finish(1, 0, 0, TriangleRegion::kVertex0);
   const V3 bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return finish(0, 1, 0);  // vertex b
+  if (d3 >= 0 && d4 <= d3) return finish(0, 1, 0, TriangleRegion::kVertex1);
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0) {  // edge ab
     const double v = d1 / (d1 - d3);
-    return finish(1 - v, v, 0);
+    return finish(1 - v, v, 0, TriangleRegion::kEdge0);
   }
   const V3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return finish(0, 0, 1);  // vertex c
+  if (d6 >= 0 && d5 <= d6) return finish(0, 0, 1, TriangleRegion::kVertex2);
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0) {  // edge ac
     const double w = d2 / (d2 - d6);
-    return finish(1 - w, 0, w);
+    return finish(1 - w, 0, w, TriangleRegion::kEdge2);
   }
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {  // edge bc
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return finish(0, 1 - w, w);
+    return finish(0, 1 - w, w, TriangleRegion::kEdge1);
   }
   const double denominator = 1 / (va + vb + vc);  // the face
   const double v = vb * denominator, w = vc * denominator;
-  return finish(1 - v - w, v, w);
+  return finish(1 - v - w, v, w, TriangleRegion::kFace);
 }
 
 EdgeEdgeDistance EdgeEdge(const V3& a0, const V3& a1, const V3& b0, const V3& b1) {

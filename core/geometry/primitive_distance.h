@@ -8,11 +8,25 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cstdint>
 
 namespace drape {
 
+// Where on a triangle (a, b, c) its closest point to a point lies. Edge k
+// runs from corner k to corner k + 1 (edge 2 from c to a).
+enum class TriangleRegion : std::uint8_t {
+  kFace,
+  kEdge0,
+  kEdge1,
+  kEdge2,
+  kVertex0,
+  kVertex1,
+  kVertex2
+};
+
 struct PointTriangleDistance {
   double squared = 0;
+  TriangleRegion region = TriangleRegion::kFace;
   // The closest point of the triangle is Σ barycentric_i x_i.
   Eigen::Vector3d barycentric = Eigen::Vector3d::Zero();
 };

@@ -40,6 +40,8 @@ class SceneParser {
   Material ReadMaterial(const JsonCursor& c);
   Bending ReadBending(const JsonCursor& c);
   BendingLaw ReadBendingLaw(const JsonCursor& c);
+  // A curve's points from a Kawabata file (relative to the scene's folder).
+  void ReadKawabataPoints(const JsonCursor& c, CurveBending& law);
   Selection ReadSelection(const JsonCursor& c);
   Support ReadSupport(const JsonCursor& c);
   Gripper ReadGripper(const JsonCursor& c);
@@ -387,6 +389,91 @@ Bending SceneParser::ReadBending(const JsonCursor& c) {
   return Bending{ReadBendingLaw(c), std::nullopt};
 }
 
+namespace {
+
+// The SI factor of the unit named at `key` (SI when absent), which must be
+// of dimension `d`.
+double UnitFactorAt(const JsonCursor& c, const char* key, Dimension d) {
+  auto u = c.Find(key);
+  if (!u) return 1.0;  // SI
+  try {
+    Unit unit = ParseUnit(u->String());
+    if (!(unit.dimension == d))
+      u->Fail(Quoted(u->String()) + " is not a unit of " + DimensionName(d));
+    return unit.si_factor;
+  } catch (const UnitError& e) {
+    u->Fail(e.what());
+  }
+}
+
+PolynomialBending ReadPolynomialBending(const JsonCursor& c,
+                                        double moment_unit,
+                                        double curvature_unit) {
+  c.ExpectObject({"model", "coefficients", "moment_unit", "curvature_unit", "valid_to"});
+  PolynomialBending law;
+  auto coefficients = c["coefficients"];
+  // M = mu Σ cₖ (K/cu)ᵏ in SI, with mu and cu the SI factors of the units.
+  double scale = moment_unit;
+  for (const auto& item : coefficients.Items()) {
+    scale /= curvature_unit;
+    law.coefficients.push_back(item.Number() * scale);
+  }
+  if (law.coefficients.empty()) coefficients.Fail("needs at least one coefficient");
+  if (!(law.coefficients[0] > 0))
+    coefficients.Fail("the linear coefficient c1 (the initial bending rigidity) must be positive");
+  law.valid_to = c["valid_to"].PositiveQuantity(dim::kCurvature);
+  return law;
+}
+
+// A curve given point by point: curvatures increasing, at least two.
+void ReadCurvePoints(const JsonCursor& c,
+                     double moment_unit,
+                     double curvature_unit,
+                     CurveBending& law) {
+  for (auto key : {"branch", "columns"})
+    if (c.Has(key)) c[key].Fail("applies only to a Kawabata 'file'");
+  auto points = c["points"];
+  for (const auto& p : points.Items()) {
+    auto km = p.Items(2);
+    law.points.push_back({km[0].Number() * curvature_unit, km[1].Number() * moment_unit});
+  }
+  if (law.points.size() < 2)
+    points.Fail("a curve needs at least 2 points, found " + std::to_string(law.points.size()));
+  for (size_t i = 1; i < law.points.size(); ++i)
+    if (!(law.points[i][0] > law.points[i - 1][0]))
+      points.Items()[i].Fail("curvatures must increase from point to point");
+}
+
+}  // namespace
+
+void SceneParser::ReadKawabataPoints(const JsonCursor& c, CurveBending& law) {
+  law.file = ReadFileReference(c["file"]);
+  KawabataOptions options;
+  if (auto b = c.Find("branch")) {
+    const int branch = b->Choice({"average", "loading", "unloading"});
+    law.branch = b->String();
+    options.branch = branch == 0   ? KawabataBranch::kAverage
+                     : branch == 1 ? KawabataBranch::kLoading
+                                   : KawabataBranch::kUnloading;
+  }
+  if (auto columns = c.Find("columns")) {
+    auto names = columns->Items(2);
+    law.curvature_column = options.curvature_column = names[0].String();
+    law.moment_column = options.moment_column = names[1].String();
+  }
+  // The measured points, by default averaged over loading and unloading
+  // (FORMAT.md); a bad file is a scene error at this key, with its own
+  // line number.
+  const fs::path file(law.file);
+  try {
+    const KawabataCurve curve = ReadKawabata(file.is_absolute() ? file : base_ / file, options);
+    for (size_t i = 0; i < curve.curvature.size(); ++i)
+      law.points.push_back({curve.curvature[i], curve.moment[i]});
+  } catch (const KawabataError& e) {
+    c["file"].Fail(e.what());
+  }
+}
+
 BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c) {
   if (!c.value().is_object()) c.Fail("expected an object with a 'model'");
   int model = c["model"].Choice({"linear", "polynomial", "curve"});
@@ -396,81 +483,16 @@ BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c) {
     if (auto r = c.Find("rigidity")) law.rigidity = r->PositiveQuantity(dim::kBendingRigidity);
     return law;
   }
-  auto unit_of = [&](const char* key, Dimension d) {
-    auto u = c.Find(key);
-    if (!u) return 1.0;  // SI
-    try {
-      Unit unit = ParseUnit(u->String());
-      if (!(unit.dimension == d))
-        u->Fail(Quoted(u->String()) + " is not a unit of " + DimensionName(d));
-      return unit.si_factor;
-    } catch (const UnitError& e) {
-      u->Fail(e.what());
-    }
-  };
-  double moment_unit = unit_of("moment_unit", dim::kMomentPerWidth);
-  double curvature_unit = unit_of("curvature_unit", dim::kCurvature);
-
-  if (model == 1) {
-    c.ExpectObject({"model", "coefficients", "moment_unit", "curvature_unit", "valid_to"});
-    PolynomialBending law;
-    auto coefficients = c["coefficients"];
-    // M = mu Σ cₖ (K/cu)ᵏ in SI, with mu and cu the SI factors of the units.
-    double scale = moment_unit;
-    for (const auto& item : coefficients.Items()) {
-      scale /= curvature_unit;
-      law.coefficients.push_back(item.Number() * scale);
-    }
-    if (law.coefficients.empty()) coefficients.Fail("needs at least one coefficient");
-    if (!(law.coefficients[0] > 0))
-      coefficients.Fail(
-          "the linear coefficient c1 (the initial bending rigidity) must be positive");
-    law.valid_to = c["valid_to"].PositiveQuantity(dim::kCurvature);
-    return law;
-  }
+  const double moment_unit = UnitFactorAt(c, "moment_unit", dim::kMomentPerWidth);
+  const double curvature_unit = UnitFactorAt(c, "curvature_unit", dim::kCurvature);
+  if (model == 1) return ReadPolynomialBending(c, moment_unit, curvature_unit);
 
   c.ExpectObject({"model", "points", "file", "moment_unit", "curvature_unit", "branch", "columns"});
   CurveBending law;
-  if (c.OneOf({"points", "file"}) == 0) {
-    for (auto key : {"branch", "columns"})
-      if (c.Has(key)) c[key].Fail("applies only to a Kawabata 'file'");
-    auto points = c["points"];
-    for (const auto& p : points.Items()) {
-      auto km = p.Items(2);
-      law.points.push_back({km[0].Number() * curvature_unit, km[1].Number() * moment_unit});
-    }
-    if (law.points.size() < 2)
-      points.Fail("a curve needs at least 2 points, found " + std::to_string(law.points.size()));
-    for (size_t i = 1; i < law.points.size(); ++i)
-      if (!(law.points[i][0] > law.points[i - 1][0]))
-        points.Items()[i].Fail("curvatures must increase from point to point");
-  } else {
-    law.file = ReadFileReference(c["file"]);
-    KawabataOptions options;
-    if (auto b = c.Find("branch")) {
-      const int branch = b->Choice({"average", "loading", "unloading"});
-      law.branch = b->String();
-      options.branch = branch == 0   ? KawabataBranch::kAverage
-                       : branch == 1 ? KawabataBranch::kLoading
-                                     : KawabataBranch::kUnloading;
-    }
-    if (auto columns = c.Find("columns")) {
-      auto names = columns->Items(2);
-      law.curvature_column = options.curvature_column = names[0].String();
-      law.moment_column = options.moment_column = names[1].String();
-    }
-    // The measured points, by default averaged over loading and unloading
-    // (FORMAT.md); a bad file is a scene error at this key, with its own
-    // line number.
-    const fs::path file(law.file);
-    try {
-      const KawabataCurve curve = ReadKawabata(file.is_absolute() ? file : base_ / file, options);
-      for (size_t i = 0; i < curve.curvature.size(); ++i)
-        law.points.push_back({curve.curvature[i], curve.moment[i]});
-    } catch (const KawabataError& e) {
-      c["file"].Fail(e.what());
-    }
-  }
+  if (c.OneOf({"points", "file"}) == 0)
+    ReadCurvePoints(c, moment_unit, curvature_unit, law);
+  else
+    ReadKawabataPoints(c, law);
   return law;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -72,6 +73,93 @@ void StateFileWriter::Append(const StoredStep& step) {
   std::fflush(file_);
 }
 
+namespace {
+
+// Throws the reader's error for the file it reads.
+using Fail = std::function<void(const std::string&)>;
+
+std::string At(std::uint64_t offset) {
+  return " (byte " + std::to_string(offset) + ")";
+}
+
+// The mesh after the header: n node positions and e quads, every number
+// checked (readers downstream index nodes by them and compute with them).
+Mesh ReadStoredMesh(std::FILE* f, std::uint64_t nodes, std::uint64_t elements, const Fail& fail) {
+  const int n = static_cast<int>(nodes), e = static_cast<int>(elements);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x(n, 3);
+  Eigen::Matrix<std::int32_t, Eigen::Dynamic, 4, Eigen::RowMajor> q(e, 4);
+  if (std::fread(x.data(), sizeof(double), x.size(), f) != static_cast<size_t>(x.size()) ||
+      std::fread(q.data(), sizeof(std::int32_t), q.size(), f) != static_cast<size_t>(q.size()))
+    fail("truncated mesh");
+  if (e % 2) {
+    std::int32_t pad;
+    if (std::fread(&pad, sizeof pad, 1, f) != 1) fail("truncated mesh");
+  }
+  for (int i = 0; i < n; ++i)
+    if (!x.row(i).allFinite())
+      fail("node " + std::to_string(i) + " of the mesh: its position is not a finite number" +
+           At(kHeaderBytes + 24 * static_cast<std::uint64_t>(i)));
+  for (int i = 0; i < e; ++i)
+    for (int c = 0; c < 4; ++c)
+      if (q(i, c) < 0 || q(i, c) >= n)
+        fail("quad " + std::to_string(i) + " has node " + std::to_string(q(i, c)) +
+             ", outside the mesh's " + std::to_string(n) + " nodes" +
+             At(kHeaderBytes + 24 * nodes + 16 * static_cast<std::uint64_t>(i) + 4 * c));
+  Mesh mesh;
+  mesh.positions = x;
+  mesh.quads = q.cast<int>();
+  return mesh;
+}
+
+// The records from `first_offset` on, each checked; a record cut off at the
+// end (a crash while writing) ends the list.
+std::vector<StoredStep> ReadStoredSteps(std::FILE* f,
+                                        std::uint64_t nodes,
+                                        std::uint64_t first_offset,
+                                        const Fail& fail) {
+  const int n = static_cast<int>(nodes);
+  const std::uint64_t record_bytes = 16 + 48 * nodes;
+  std::vector<StoredStep> steps;
+  for (std::uint64_t record = 0;; ++record) {
+    const std::uint64_t offset = first_offset + record * record_bytes;
+    std::int32_t ids[2];
+    StoredStep step;
+    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> p(n, 3), t(n, 3);
+    if (std::fread(ids, sizeof ids, 1, f) != 1 ||
+        std::fread(&step.lambda, sizeof(double), 1, f) != 1 ||
+        std::fread(p.data(), sizeof(double), p.size(), f) != static_cast<size_t>(p.size()) ||
+        std::fread(t.data(), sizeof(double), t.size(), f) != static_cast<size_t>(t.size()))
+      break;  // end of file, or a record cut off by a crash: keep the whole ones
+    const std::string where = "record " + std::to_string(record) + " (stage " +
+                              std::to_string(ids[0]) + ", step " + std::to_string(ids[1]) + ")";
+    if (!std::isfinite(step.lambda))
+      fail(where + ": the load factor is not a finite number" + At(offset + 8));
+    for (int i = 0; i < n; ++i) {
+      const std::uint64_t director_at = offset + 16 + 24 * (nodes + static_cast<std::uint64_t>(i));
+      if (!p.row(i).allFinite())
+        fail(where + ": node " + std::to_string(i) + "'s position is not a finite number" +
+             At(offset + 16 + 24 * static_cast<std::uint64_t>(i)));
+      if (!t.row(i).allFinite())
+        fail(where + ": node " + std::to_string(i) + "'s director is not a finite number" +
+             At(director_at));
+      // Directors are unit vectors; a rotation rebuilt from anything else
+      // (StateOf) is no rotation, and overflows for large ones.
+      const double length = t.row(i).norm();
+      if (std::abs(length - 1.0) > kDirectorTolerance)
+        fail(where + ": node " + std::to_string(i) + "'s director is not a unit vector (length " +
+             Number(length) + ")" + At(director_at));
+    }
+    step.stage = ids[0];
+    step.step = ids[1];
+    step.positions = p;
+    step.directors = t;
+    steps.push_back(std::move(step));
+  }
+  return steps;
+}
+
+}  // namespace
+
 StateFile ReadStateFile(const std::filesystem::path& file) {
   std::FILE* f = std::fopen(file.c_str(), "rb");
   if (!f) throw std::runtime_error("cannot open state file '" + file.string() + "'");
@@ -79,10 +167,9 @@ StateFile ReadStateFile(const std::filesystem::path& file) {
     std::FILE* f;
     ~Closer() { std::fclose(f); }
   } closer{f};
-  auto fail = [&](const std::string& what) {
+  const Fail fail = [&](const std::string& what) {
     throw std::runtime_error("state file '" + file.string() + "': " + what);
   };
-  auto at = [](std::uint64_t offset) { return " (byte " + std::to_string(offset) + ")"; };
   char magic[8];
   std::uint32_t header[4];
   if (std::fread(magic, 1, 8, f) != 8 || std::memcmp(magic, kMagic, 8) != 0)
@@ -105,66 +192,9 @@ StateFile ReadStateFile(const std::filesystem::path& file) {
       elements > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
     fail("the header gives " + std::to_string(nodes) + " nodes and " + std::to_string(elements) +
          " elements, more than a mesh can have");
-  const int n = static_cast<int>(nodes), e = static_cast<int>(elements);
   StateFile out;
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x(n, 3);
-  Eigen::Matrix<std::int32_t, Eigen::Dynamic, 4, Eigen::RowMajor> q(e, 4);
-  if (std::fread(x.data(), sizeof(double), x.size(), f) != static_cast<size_t>(x.size()) ||
-      std::fread(q.data(), sizeof(std::int32_t), q.size(), f) != static_cast<size_t>(q.size()))
-    fail("truncated mesh");
-  if (e % 2) {
-    std::int32_t pad;
-    if (std::fread(&pad, sizeof pad, 1, f) != 1) fail("truncated mesh");
-  }
-  // Readers downstream index nodes by these and compute with every number:
-  // nothing out of range or non-finite may pass.
-  for (int i = 0; i < n; ++i)
-    if (!x.row(i).allFinite())
-      fail("node " + std::to_string(i) + " of the mesh: its position is not a finite number" +
-           at(kHeaderBytes + 24 * static_cast<std::uint64_t>(i)));
-  for (int i = 0; i < e; ++i)
-    for (int c = 0; c < 4; ++c)
-      if (q(i, c) < 0 || q(i, c) >= n)
-        fail("quad " + std::to_string(i) + " has node " + std::to_string(q(i, c)) +
-             ", outside the mesh's " + std::to_string(n) + " nodes" +
-             at(kHeaderBytes + 24 * nodes + 16 * static_cast<std::uint64_t>(i) + 4 * c));
-  out.mesh.positions = x;
-  out.mesh.quads = q.cast<int>();
-  const std::uint64_t record_bytes = 16 + 48 * nodes;
-  for (std::uint64_t record = 0;; ++record) {
-    const std::uint64_t offset = kHeaderBytes + mesh_bytes + record * record_bytes;
-    std::int32_t ids[2];
-    StoredStep step;
-    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> p(n, 3), t(n, 3);
-    if (std::fread(ids, sizeof ids, 1, f) != 1 ||
-        std::fread(&step.lambda, sizeof(double), 1, f) != 1 ||
-        std::fread(p.data(), sizeof(double), p.size(), f) != static_cast<size_t>(p.size()) ||
-        std::fread(t.data(), sizeof(double), t.size(), f) != static_cast<size_t>(t.size()))
-      break;  // end of file, or a record cut off by a crash: keep the whole ones
-    const std::string where = "record " + std::to_string(record) + " (stage " +
-                              std::to_string(ids[0]) + ", step " + std::to_string(ids[1]) + ")";
-    if (!std::isfinite(step.lambda))
-      fail(where + ": the load factor is not a finite number" + at(offset + 8));
-    for (int i = 0; i < n; ++i) {
-      if (!p.row(i).allFinite())
-        fail(where + ": node " + std::to_string(i) + "'s position is not a finite number" +
-             at(offset + 16 + 24 * static_cast<std::uint64_t>(i)));
-      if (!t.row(i).allFinite())
-        fail(where + ": node " + std::to_string(i) + "'s director is not a finite number" +
-             at(offset + 16 + 24 * (nodes + static_cast<std::uint64_t>(i))));
-      // Directors are unit vectors; a rotation rebuilt from anything else
-      // (StateOf) is no rotation, and overflows for large ones.
-      const double length = t.row(i).norm();
-      if (std::abs(length - 1.0) > kDirectorTolerance)
-        fail(where + ": node " + std::to_string(i) + "'s director is not a unit vector (length " +
-             Number(length) + ")" + at(offset + 16 + 24 * (nodes + static_cast<std::uint64_t>(i))));
-    }
-    step.stage = ids[0];
-    step.step = ids[1];
-    step.positions = p;
-    step.directors = t;
-    out.steps.push_back(std::move(step));
-  }
+  out.mesh = ReadStoredMesh(f, nodes, elements, fail);
+  out.steps = ReadStoredSteps(f, nodes, kHeaderBytes + mesh_bytes, fail);
   return out;
 }
 

@@ -401,21 +401,6 @@ SparseCholesky::SparseCholesky(FactorizationPath path)
 
 SparseCholesky::~SparseCholesky() = default;
 
-double AvailableMemoryBytes() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string line;
-  double kib = 0;
-  while (std::getline(meminfo, line))
-    if (std::sscanf(line.c_str(), "MemAvailable: %lf kB", &kib) == 1) return kib * 1024;
-  return std::numeric_limits<double>::infinity();
-}
-
-double PeakMemoryBytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux reports KiB
-}
-
 void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {
   CheckShape(upper);
   Impl& m = *impl_;

@@ -13,6 +13,8 @@
 
 #include <memory>
 
+#include "core/linalg/machine_resources.h"
+
 namespace drape {
 
 struct FactorizationInfo {
@@ -66,11 +68,5 @@ class SparseCholesky {
   double memory_limit_ = 0;
   double factor_bytes_ = 0;
 };
-
-// The memory available to a new allocation [bytes] (Linux MemAvailable);
-// +∞ where that cannot be read.
-double AvailableMemoryBytes();
-// The most memory this process has held resident so far [bytes].
-double PeakMemoryBytes();
 
 }  // namespace drape

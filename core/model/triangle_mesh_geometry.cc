@@ -1,5 +1,6 @@
 #include "core/model/triangle_mesh_geometry.h"
 
+#include "core/geometry/primitive_distance.h"
 #include "core/model/scene_error.h"
 
 #include <Eigen/Geometry>
@@ -361,18 +362,12 @@ std::string EdgeName(const RawMesh& mesh, int a, int b) {
          Format(mesh.vertices[b]);
 }
 
-// Checks the mesh is a closed, consistently oriented, non-degenerate surface
-// and turns it outward. Returns the half-edges sorted by undirected edge, in
-// pairs, for the edge pseudo-normals.
-std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
-  const int n = static_cast<int>(mesh.triangles.size());
-  if (n == 0) report.Fail("contains no triangles");
-
-  // Relative to the longest edge, so the test does not depend on units; a
-  // triangle this thin has no meaningful normal.
+// Relative to the longest edge, so the test does not depend on units; a
+// triangle this thin has no meaningful normal.
+void CheckNoDegenerateTriangle(const RawMesh& mesh, const Reporter& report) {
   std::size_t degenerate = 0;
   int first_degenerate = -1;
-  for (int t = 0; t < n; ++t) {
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     const auto& [a, b, c] = mesh.triangles[t];
     const Vector3d& pa = mesh.vertices[a];
     const Vector3d &pb = mesh.vertices[b], &pc = mesh.vertices[c];
@@ -385,7 +380,11 @@ std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
   if (degenerate > 0)
     report.Fail("has " + Plural(degenerate, "degenerate triangle", "degenerate triangles") +
                 " (zero area), e.g. " + TriangleName(mesh, first_degenerate));
+}
 
+// Every triangle's three half-edges, sorted by undirected edge.
+std::vector<HalfEdge> SortedHalfEdges(const RawMesh& mesh) {
+  const int n = static_cast<int>(mesh.triangles.size());
   std::vector<HalfEdge> edges;
   edges.reserve(3 * static_cast<std::size_t>(n));
   for (int t = 0; t < n; ++t)
@@ -396,7 +395,12 @@ std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
   std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
     return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.triangle < y.triangle;
   });
+  return edges;
+}
 
+// Every edge shared by exactly two triangles that traverse it in opposite
+// directions: a closed, manifold, consistently oriented surface.
+void CheckEdges(const RawMesh& mesh, const std::vector<HalfEdge>& edges, const Reporter& report) {
   std::size_t open = 0, non_manifold = 0, misoriented = 0;
   const HalfEdge *first_open = nullptr, *first_non_manifold = nullptr, *first_misoriented = nullptr;
   std::size_t most_shared = 0;
@@ -431,7 +435,11 @@ std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
         EdgeName(mesh, first_misoriented->lo, first_misoriented->hi) + " in " +
         TriangleName(mesh, first_misoriented[0].triangle) + " and " +
         TriangleName(mesh, first_misoriented[1].triangle));
+}
 
+// Turns an inward-facing surface outward (as good, once turned), and the
+// half-edges with it; a surface that encloses no volume is refused.
+void OrientOutward(RawMesh& mesh, std::vector<HalfEdge>& edges, const Reporter& report) {
   // About a point near the mesh, so the volume does not cancel from far away.
   const Vector3d origin = mesh.vertices[mesh.triangles[0][0]];
   double volume6 = 0.0;
@@ -443,7 +451,7 @@ std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
   }
   const double size = box.diagonal().norm();
   if (std::abs(volume6) <= 6e-12 * size * size * size) report.Fail("encloses no volume");
-  if (volume6 < 0.0) {  // inward-facing: as good, once turned
+  if (volume6 < 0.0) {
     for (auto& triangle : mesh.triangles) std::swap(triangle[1], triangle[2]);
     for (HalfEdge& e : edges) {
       e.forward = !e.forward;
@@ -451,45 +459,35 @@ std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
       e.local = 2 - e.local;
     }
   }
+}
+
+// Checks the mesh is a closed, consistently oriented, non-degenerate surface
+// and turns it outward. Returns the half-edges sorted by undirected edge, in
+// pairs, for the edge pseudo-normals.
+std::vector<HalfEdge> CheckAndOrient(RawMesh& mesh, const Reporter& report) {
+  if (mesh.triangles.empty()) report.Fail("contains no triangles");
+  CheckNoDegenerateTriangle(mesh, report);
+  std::vector<HalfEdge> edges = SortedHalfEdges(mesh);
+  CheckEdges(mesh, edges, report);
+  OrientOutward(mesh, edges, report);
   return edges;
 }
 
 // ---- the geometry -----------------------------------------------------------
 
-enum class Feature : std::uint8_t { kFace, kEdge0, kEdge1, kEdge2, kVertex0, kVertex1, kVertex2 };
+using Feature = TriangleRegion;
 
 struct ClosestPoint {
   Vector3d point;
   Feature feature;
 };
 
-// Ericson, Real-Time Collision Detection §5.1.5: Voronoi regions of the
-// triangle, tested vertex, edge, face, each with a few dot products. Edge k
-// runs from corner k to corner k + 1.
 ClosestPoint ClosestOnTriangle(const Vector3d& p,
                                const Vector3d& a,
                                const Vector3d& b,
                                const Vector3d& c) {
-  const Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return {a, Feature::kVertex0};
-  const Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return {b, Feature::kVertex1};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return {a + (d1 / (d1 - d3)) * ab, Feature::kEdge0};
-  const Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return {c, Feature::kVertex2};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return {a + (d2 / (d2 - d6)) * ac, Feature::kEdge2};
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {b + w * (c - b), Feature::kEdge1};
-  }
-  const double denominator = 1.0 / (va + vb + vc);
-  return {a + ab * (vb * denominator) + ac * (vc * denominator), Feature::kFace};
+  const PointTriangleDistance d = PointTriangle(p, a, b, c);
+  return {d.barycentric(0) * a + d.barycentric(1) * b + d.barycentric(2) * c, d.region};
 }
 
 class TriangleMeshGeometry final : public ObstacleGeometry {

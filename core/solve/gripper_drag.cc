@@ -6,19 +6,13 @@
 #include <stdexcept>
 #include <variant>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "core/fe/stage_loading.h"
+#include "core/linalg/machine_resources.h"
 
 namespace drape {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// A residual this close to its round-off level cannot fall further.
-constexpr double kRoundOffFactor = 10;
 
 std::string DragStageName(const std::string& gripper) {
   return "drag " + gripper;
@@ -88,7 +82,7 @@ double GripperDrag::Correct(DragFrame& frame) {
   auto done = [&] {
     return !std::isfinite(ratio) || ratio <= settings_.tolerance ||
            corrections >= settings_.max_corrections ||
-           residual.norm() <= kRoundOffFactor * system.RoundOffLevel(basis_.state);
+           residual.norm() <= settings_.round_off_factor * system.RoundOffLevel(basis_.state);
   };
   // The factorisation is of an earlier state: the predictor's start, or the
   // state before the last correction.
@@ -122,9 +116,7 @@ double GripperDrag::Correct(DragFrame& frame) {
 
 DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
   const auto start = Clock::now();
-#ifdef _OPENMP
-  if (settings_.threads > 0) omp_set_num_threads(settings_.threads);
-#endif
+  UseAssemblyThreads(settings_.threads);
   DragFrame frame;
   frame.frame = ++frames_;
   const Eigen::Vector3d motion = offset - offset_;

@@ -33,6 +33,7 @@
 
 #include "core/contact/node_contact.h"
 #include "core/continuation/equilibrium_system.h"
+#include "core/continuation/newton_corrector.h"
 #include "core/fe/shell_model.h"
 #include "core/fe/shell_state.h"
 #include "core/model/scene.h"
@@ -80,6 +81,9 @@ struct DragSettings {
   // the other core is busy (a preview, a build), where two OpenMP threads
   // wait on each other.
   int threads = 0;
+  // A residual this many times its round-off level cannot fall further: the
+  // corrector's own floor (NewtonSettings::round_off_factor).
+  double round_off_factor = NewtonSettings{}.round_off_factor;
 };
 
 struct DragFrame {

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "core/continuation/step_policy.h"
 #include "core/model/scene.h"
 
 namespace drape {
@@ -56,6 +57,11 @@ struct SolverOptions {
   // Wall-clock limit of a run [s], pauses included; 0: none. Past it the run
   // stops with Termination::kTimeLimit and keeps every converged step.
   double max_wall_s = 0;
+
+  // The step-length rule these options ask for.
+  StepPolicy Stepping() const {
+    return {acceleration, target_iterations, min_step_growth, max_step_growth};
+  }
 
   // Copies the scene's `solver` settings over the defaults.
   static SolverOptions FromScene(const SolverSettings& settings);

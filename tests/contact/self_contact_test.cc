@@ -72,7 +72,7 @@ Eigen::VectorXd HessianTimes(const SelfContactEvaluation& e, const Eigen::Vector
 
 TEST(SelfContact, GradientAndHessianAgainstDifferencesAlongRandomDirections) {
   const FoldedSheet sheet = Fold(6.5e-4, 5e-5, 3.7e-3);
-  const SelfContact contact(sheet.mesh, Settings());
+  SelfContact contact(sheet.mesh, Settings());
   const SelfContactEvaluation e = contact.Evaluate(sheet.x, true);
   ASSERT_GT(e.active_pairs, 100);
   std::mt19937_64 rng(3);
@@ -109,7 +109,7 @@ TEST(SelfContact, TheFabricPushesOnItselfInBalance) {
 
 TEST(SelfContact, StepBoundKeepsTheLayersApart) {
   const FoldedSheet sheet = Fold(1e-3, 0);
-  const SelfContact contact(sheet.mesh, Settings());
+  SelfContact contact(sheet.mesh, Settings());
   // The upper layer moving down 2 mm would pass through the lower one; the
   // offset (0.5 mm) is reached after a quarter of the step.
   Positions dx = Positions::Zero(sheet.x.rows(), 3);

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/continuation/equilibrium_system.h"
-#include "core/continuation/newton_solver.h"
+#include "core/continuation/newton_corrector.h"
 #include "core/fe/dof_map.h"
 #include "core/io/scene_reader.h"
 #include "core/solve/shell_solver.h"

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,27 +55,42 @@ TEST(IncludeGraph, CoreHasNoQtNoVtkAndNothingAboveIt) {
   EXPECT_TRUE(found.empty()) << Lines(found);
 }
 
-// core's folders, each with the folders it may include (besides itself):
-// the order of the static libraries in core/CMakeLists.txt.
-const std::vector<std::pair<std::string, std::vector<std::string>>>& CoreLayers() {
-  static const std::vector<std::pair<std::string, std::vector<std::string>>> layers = {
-      {"geometry", {}},
-      {"model", {}},
-      {"mechanics", {}},
-      {"linalg", {}},
-      {"fe", {"model", "mechanics"}},
-      {"contact", {"fe", "geometry", "model"}},
-      {"continuation", {"contact", "fe", "linalg"}},
-      {"solve", {"continuation", "contact", "fe", "mechanics", "model"}},
-      {"io", {"solve", "fe", "mechanics", "model"}},
-  };
+// core's folders, each with the folders it may include (besides itself), as
+// core/CMakeLists.txt declares them: `drape_core_layer(folder below…)`, the
+// libraries' link order. Read from there, so the layers are written once.
+using Layers = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+Layers CoreLayers() {
+  Layers layers;
+  std::ifstream in(fs::path(DRAPE_SOURCE_DIR) / "core" / "CMakeLists.txt");
+  const std::string call = "drape_core_layer(";
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(call, 0) != 0) continue;
+    std::istringstream words(line.substr(call.size(), line.find(')') - call.size()));
+    std::string folder, below;
+    words >> folder;
+    layers.push_back({folder, {}});
+    while (words >> below) layers.back().second.push_back(below);
+  }
   return layers;
+}
+
+TEST(IncludeGraph, TheLayersAreReadFromCoreCMakeLists) {
+  const Layers layers = CoreLayers();
+  ASSERT_GE(layers.size(), 8u);
+  EXPECT_EQ(layers.front().first, "geometry");
+  const auto fe =
+      std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.first == "fe"; });
+  ASSERT_NE(fe, layers.end());
+  EXPECT_EQ(fe->second, (std::vector<std::string>{"model", "mechanics"}));
 }
 
 TEST(IncludeGraph, EachCoreFolderIncludesOnlyTheFoldersBelowIt) {
   std::vector<std::string> folders;
-  for (const auto& [folder, below] : CoreLayers()) folders.push_back(folder);
-  for (const auto& [folder, below] : CoreLayers()) {
+  const Layers layers = CoreLayers();
+  for (const auto& [folder, below] : layers) folders.push_back(folder);
+  for (const auto& [folder, below] : layers) {
     std::vector<std::string> forbidden;
     for (const std::string& other : folders)
       if (other != folder && std::find(below.begin(), below.end(), other) == below.end())
@@ -89,11 +105,11 @@ TEST(IncludeGraph, EveryCoreFolderHasItsLayer) {
   for (const auto& entry : fs::directory_iterator(fs::path(DRAPE_SOURCE_DIR) / "core")) {
     if (!entry.is_directory()) continue;
     const std::string name = entry.path().filename().string();
-    const bool listed = std::any_of(CoreLayers().begin(),
-                                    CoreLayers().end(),
-                                    [&](const auto& layer) { return layer.first == name; });
-    EXPECT_TRUE(listed) << "core/" << name << " is in no layer: add it to CoreLayers() and "
-                        << "core/CMakeLists.txt";
+    const Layers layers = CoreLayers();
+    const bool listed = std::any_of(
+        layers.begin(), layers.end(), [&](const auto& layer) { return layer.first == name; });
+    EXPECT_TRUE(listed) << "core/" << name
+                        << " is in no layer: add a drape_core_layer() line to core/CMakeLists.txt";
   }
 }
 

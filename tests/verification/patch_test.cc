@@ -26,7 +26,7 @@
 #include <string>
 
 #include "core/continuation/equilibrium_system.h"
-#include "core/continuation/newton_solver.h"
+#include "core/continuation/newton_corrector.h"
 #include "core/fe/dof_map.h"
 #include "core/fe/shell_model.h"
 #include "core/fe/shell_state.h"

@@ -13,7 +13,7 @@
 
 #include "core/contact/self_contact.h"
 #include "core/continuation/equilibrium_system.h"
-#include "core/continuation/newton_solver.h"
+#include "core/continuation/newton_corrector.h"
 #include "core/fe/dof_map.h"
 #include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
@@ -82,7 +82,7 @@ TEST(StackedSheets, ContactPressureBetweenThemIsTheLoadOverTheArea) {
       2 * settings.offset * settings.activation + settings.activation * settings.activation;
   settings.stiffness = 10 * (model.total_weight.norm() / model.NodeCount()) /
                        (2.39 * s_hat * (settings.offset + 0.5 * settings.activation));
-  const SelfContact contact(model.mesh, settings);
+  SelfContact contact(model.mesh, settings);
   EquilibriumSystem system(model, dofs);
   system.SetSelfContact(&contact);
 

@@ -1,5 +1,9 @@
-// Newton's method for equilibrium at a fixed load: K Δq = −R, φ += Δu,
-// Λ ← exp(ŵ)Λ, until ‖R‖/‖R₀‖ ≤ tolerance.
+// The Newton corrector: K Δq = −R, φ += Δu, Λ ← exp(ŵ)Λ, until ‖R‖/‖R₀‖
+// meets the tolerance or the round-off floor. One loop serves every caller —
+// equilibrium at a fixed load, the arc-length corrector, the step onto a
+// branch — each saying through a CorrectorRequest how it assembles, how it
+// turns a factorised tangent into a correction and what else a converged
+// iterate must satisfy.
 #pragma once
 
 #include <Eigen/Core>
@@ -101,12 +105,51 @@ std::string Number(double value);
 // Why a stalled iteration failed, for the step's message.
 std::string StallReason(double ratio, double tolerance);
 
+// What a caller asks of the corrector.
+struct CorrectorRequest {
+  // How iterations are judged (tolerance, floor, stall, divergence, limit).
+  NewtonSettings settings;
+  // The residual at an iterate and the ‖R₀‖ its ratio is taken against (0:
+  // the ratio is ‖R‖ itself).
+  struct Residual {
+    Eigen::VectorXd free;  // R over the free DOFs
+    double reference = 0;
+  };
+  // Assembles the system (tangent included) at `state`; `iteration` counts
+  // from 0.
+  std::function<Residual(const ShellState& state, int iteration)> assemble;
+  // With the tangent factorised at `state`: computes the correction from
+  // the residual, applies it to `state`, and returns max|Δu| [m].
+  std::function<double(const Eigen::VectorXd& residual, ShellState& state)> correct;
+  // Optional: a converged iterate the caller still refuses, and why ("" to
+  // accept). A refused one ends the iteration as diverged, without the
+  // factorisation that would count its negative pivots.
+  std::function<std::string(const ShellState& state)> refuse;
+};
+
+// Iterates from `state` (updated in place) until the request's settings
+// judge it done. `iterations` counts the corrections applied; a converged
+// outcome carries the negative pivots of its tangent. On return the system
+// holds the assembly at the final state.
+NewtonOutcome RunCorrector(EquilibriumSystem& system,
+                           ShellState& state,
+                           const CorrectorRequest& request,
+                           const CancellationToken* cancel);
+
+// The correction K Δq = −R on the system's factorised tangent, cut to the
+// part that keeps the fabric's layers apart, applied to `state`; returns
+// max|Δu| [m]. The corrector's `correct` at a fixed λ.
+double ApplyNewtonCorrection(EquilibriumSystem& system,
+                             const Eigen::VectorXd& residual,
+                             ShellState& state);
+
 // External force (full, 5 per node) for a state: moments depend on the
 // nodal bases, so this is a function, not a vector.
 using ExternalForce = std::function<Eigen::VectorXd(const ShellState&)>;
 
-// Iterates from `state` (updated in place). On return the system holds the
-// assembly at the final state.
+// Equilibrium at a fixed load: the corrector with `external` as the load,
+// the ratio taken against the first residual (or settings.residual_reference,
+// or the force level).
 NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
                                const ExternalForce& external,
                                const NewtonSettings& settings,

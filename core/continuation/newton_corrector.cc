@@ -1,4 +1,4 @@
-#include "core/continuation/newton_solver.h"
+#include "core/continuation/newton_corrector.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,13 +71,11 @@ IterationVerdict JudgeIteration(const NewtonSettings& settings,
   return {};
 }
 
-NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
-                               const ExternalForce& external,
-                               const NewtonSettings& settings,
-                               ShellState& state,
-                               const CancellationToken* cancel) {
+NewtonOutcome RunCorrector(EquilibriumSystem& system,
+                           ShellState& state,
+                           const CorrectorRequest& request,
+                           const CancellationToken* cancel) {
   NewtonOutcome out;
-  double r0 = 0;
   double last_correction = INFINITY;
   for (int it = 0;; ++it) {
     if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done) {
@@ -85,22 +83,18 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
       out.reason = v.reason;
       return out;
     }
-    system.Assemble(state, /*with_tangent=*/true);
-    const Eigen::VectorXd f_ext = external(state);
-    const Eigen::VectorXd r = system.Residual(f_ext);
-    const double norm = r.norm();
-    // A predictor may start far from or close to equilibrium; the test stays
-    // relative to the load the step added, not to where the predictor landed.
-    if (it == 0) r0 = settings.residual_reference > 0 ? settings.residual_reference : norm;
-    const double reference = settings.relative_to_force_level ? system.ForceLevel(f_ext) : r0;
-    const IterationVerdict v = JudgeIteration(settings,
-                                              norm,
-                                              reference,
-                                              system.RoundOffLevel(state),
-                                              last_correction,
-                                              it,
-                                              out.residuals,
-                                              out.convergence);
+    const CorrectorRequest::Residual r = request.assemble(state, it);
+    IterationVerdict v = JudgeIteration(request.settings,
+                                        r.free.norm(),
+                                        r.reference,
+                                        system.RoundOffLevel(state),
+                                        last_correction,
+                                        it,
+                                        out.residuals,
+                                        out.convergence);
+    if (v.done && v.status == NewtonOutcome::Status::kConverged && request.refuse)
+      if (std::string why = request.refuse(state); !why.empty())
+        v = {true, NewtonOutcome::Status::kDiverged, std::move(why)};
     if (v.done) {
       out.status = v.status;
       out.reason = v.reason;
@@ -111,14 +105,45 @@ NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
       return out;
     }
     system.Factorize();
-    Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-r));
-    // Never through the fabric itself: the part of the step that keeps its
-    // layers apart (self-contact; the whole step otherwise).
-    if (const double t = system.StepBound(state, correction); t < 1) correction *= t;
-    ApplyIncrement(correction, state);
+    last_correction = request.correct(r.free, state);
     ++out.iterations;
-    last_correction = MaxTranslation(correction);
   }
+}
+
+double ApplyNewtonCorrection(EquilibriumSystem& system,
+                             const Eigen::VectorXd& residual,
+                             ShellState& state) {
+  Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-residual));
+  // Never through the fabric itself: the part of the step that keeps its
+  // layers apart (self-contact; the whole step otherwise).
+  if (const double t = system.StepBound(state, correction); t < 1) correction *= t;
+  ApplyIncrement(correction, state);
+  return MaxTranslation(correction);
+}
+
+NewtonOutcome SolveEquilibrium(EquilibriumSystem& system,
+                               const ExternalForce& external,
+                               const NewtonSettings& settings,
+                               ShellState& state,
+                               const CancellationToken* cancel) {
+  CorrectorRequest request;
+  request.settings = settings;
+  double r0 = 0;
+  request.assemble = [&](const ShellState& s, int iteration) {
+    system.Assemble(s, /*with_tangent=*/true);
+    const Eigen::VectorXd f_ext = external(s);
+    CorrectorRequest::Residual r{system.Residual(f_ext), 0.0};
+    // A predictor may start far from or close to equilibrium; the test stays
+    // relative to the load the step added, not to where the predictor landed.
+    if (iteration == 0)
+      r0 = settings.residual_reference > 0 ? settings.residual_reference : r.free.norm();
+    r.reference = settings.relative_to_force_level ? system.ForceLevel(f_ext) : r0;
+    return r;
+  };
+  request.correct = [&](const Eigen::VectorXd& residual, ShellState& s) {
+    return ApplyNewtonCorrection(system, residual, s);
+  };
+  return RunCorrector(system, state, request, cancel);
 }
 
 }  // namespace drape

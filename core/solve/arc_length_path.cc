@@ -1,0 +1,114 @@
+// A stage's path under arc-length control: steps of length Δs along the
+// path (ArcLengthStepper), through limit points, and onto a stable branch at
+// a bifurcation.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/continuation/step_policy.h"
+#include "core/solve/bifurcation_passage.h"
+#include "core/solve/converged_step.h"
+#include "core/solve/run_diagnostics.h"
+#include "core/solve/stage_runner.h"
+
+namespace drape {
+namespace {
+
+// A snap-back may take λ below 0 for a while (a load that must reverse to
+// hold the shell on its path); a path that runs back past this does not come
+// back to the stage's end.
+constexpr double kLowestLambda = -1.0;
+
+StageOutcome RunsBackTooFar(const Stage& spec, int index) {
+  return StageOutcome::Stop(Termination::kStepTooSmall,
+                            "stage '" + spec.name +
+                                "': the path runs back past λ = −1 and does not reach the "
+                                "stage's end: past its limit points the part would snap, a jump no "
+                                "quasi-static path follows; change what the stage does (stages[" +
+                                std::to_string(index) +
+                                "]) or hold the part more (supports, grippers)");
+}
+
+// Where the stage's path stands between steps.
+struct PathPosition {
+  double lambda = 0;
+  double arc_length = 0;      // of the next step; 0: size the first step from Δλ₀
+  double max_arc_length = 0;  // set from the first step: max_increment in its units
+  std::optional<PathDirection> previous;
+  double last_landing = NAN;  // λ where the last branch switch landed
+  double lowest = 0;          // the smallest λ the path reached
+};
+
+}  // namespace
+
+StageOutcome RunArcLength(SolveRun& run,
+                          int index,
+                          const StageLoading& loading,
+                          StageSummary& stage) {
+  const Stage& spec = run.scene.stages[index];
+  const SolverOptions& options = run.options;
+  ArcLengthStepper stepper(*run.system, loading, run.Newton(), run.Psi());
+  const StepPolicy policy = options.Stepping();
+  PathPosition at;
+  int cuts_in_a_row = 0;
+  while (at.lambda < 1.0 - 1e-12) {
+    if (run.summary.steps >= options.max_steps) return MaxStepsReached(run, spec, at.lambda);
+    const ShellState saved = run.state;
+    const PathDirection* previous = at.previous ? &*at.previous : nullptr;
+    ContinuationStep step = stepper.Step(run.state,
+                                         {.lambda = at.lambda,
+                                          .arc_length = at.arc_length,
+                                          .first_increment = spec.initial_increment,
+                                          .previous = previous,
+                                          .target = 1.0},
+                                         run.cancel);
+    run.CountIterations(step.iterations, stage);
+    if (at.max_arc_length == 0)
+      at.max_arc_length = step.arc_length * options.max_increment / spec.initial_increment;
+    if (step.status != NewtonOutcome::Status::kConverged) {
+      run.state = saved;
+      if (StageOutcome o = CutBack(run, step, spec, at.lambda, cuts_in_a_row, stage); !o.GoesOn())
+        return o;
+      at.arc_length = 0.5 * step.arc_length;
+      continue;
+    }
+    if (step.lambda < kLowestLambda) return RunsBackTooFar(spec, index);
+    cuts_in_a_row = 0;
+    const std::optional<StabilityEvent> event =
+        PivotChange(run, stepper, step, run.lambda_direction);
+    if (event && SwitchesAt(run, *event, step)) {
+      PathPoint branch;
+      const Crossing crossing{
+          PathPoint{saved, at.lambda, {}}, previous, PathPoint{run.state, event->lambda, step}};
+      if (StageOutcome o =
+              PassBifurcation(run, index, loading, stepper, crossing, *event, stage, branch);
+          !o.GoesOn())
+        return o;
+      // Landing where the last switch landed: forward from there led back to
+      // the same bifurcation (the branch bends back; the part would snap).
+      // Let the path go the way the switch pointed instead of round again.
+      if (std::abs(branch.lambda - at.last_landing) < 1e-6) stepper.SetDefiniteGoesForward(false);
+      at.last_landing = branch.lambda;
+      at.lambda = branch.lambda;
+      at.previous = branch.step.direction;
+      // Grow from the switch's own length: the branch starts near the point.
+      at.arc_length = std::min(branch.step.arc_length, at.max_arc_length);
+      continue;
+    }
+    at.lambda = step.landed ? 1.0 : step.lambda;
+    at.lowest = std::min(at.lowest, at.lambda);
+    at.previous = step.direction;
+    ++stage.steps;
+    stage.final_lambda = at.lambda;
+    run.stage_path_length += step.arc_length;
+    if (StageOutcome o = RecordConvergedStep(
+            run, {index, stage.steps, at.lambda}, loading, step, event ? &*event : nullptr);
+        !o.GoesOn())
+      return o;
+    at.arc_length = std::min(policy.Next(step.arc_length, step.iterations), at.max_arc_length);
+  }
+  if (at.lowest < -1e-6) run.summary.warnings.push_back(ReversedLoadWarning(spec, at.lowest));
+  return StageOutcome::On();
+}
+
+}  // namespace drape

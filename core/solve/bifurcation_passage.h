@@ -1,0 +1,57 @@
+// Limit and bifurcation points met along a stage's path: what a change of the
+// negative pivots was, whether the run switches branch there, and the switch
+// itself (locate, switch, record the points reached).
+#pragma once
+
+#include <optional>
+
+#include "core/continuation/arc_length_stepper.h"
+#include "core/continuation/branch_switch.h"
+#include "core/continuation/stability_event.h"
+#include "core/fe/stage_loading.h"
+#include "core/solve/solve_run.h"
+
+namespace drape {
+
+// What a change of the negative pivots at a converged step at `lambda` is: a
+// limit point when λ's direction along the path (+1 rising, −1 falling) is
+// not the one before, else a bifurcation.
+StabilityEvent ClassifyPivotChange(int direction_before, int direction, double lambda);
+
+// The change of the negative pivots at a converged step, if its count differs
+// from the last recorded step's: classified against λ's direction along the
+// path before it, `direction`, which then becomes the direction at the step.
+std::optional<StabilityEvent> PivotChange(const SolveRun& run,
+                                          ArcLengthStepper& stepper,
+                                          const ContinuationStep& step,
+                                          int& direction);
+
+// Whether the run switches branch at this event: a bifurcation crossed from
+// a stable state under `stable` branching. Between a limit point and the next
+// one the path is unstable already (a real part snaps through it), and the
+// branches of a bifurcation there are no more observable than the primary
+// path, which leads on to the stable states beyond.
+bool SwitchesAt(const SolveRun& run, const StabilityEvent& event, const ContinuationStep& step);
+
+// Where a path meets a bifurcation: the last converged point before it, the
+// direction it came from (null at a stage's start) and the point past it.
+struct Crossing {
+  PathPoint start;
+  const PathDirection* previous = nullptr;
+  PathPoint past;
+};
+
+// Locates the bifurcation, switches to a secondary branch and records the
+// points reached (the bifurcation, the first point on the branch) into
+// `reached`; the stepping goes on from there. A stop when no branch could be
+// followed (kNoStableBranch) or the run was cancelled.
+StageOutcome PassBifurcation(SolveRun& run,
+                             int index,
+                             const StageLoading& loading,
+                             ArcLengthStepper& stepper,
+                             const Crossing& crossing,
+                             StabilityEvent event,
+                             StageSummary& stage,
+                             PathPoint& reached);
+
+}  // namespace drape
