@@ -10,8 +10,8 @@
 # (`apt-get install graphviz`), unless --no-png.
 #
 # It is also a check: an include that goes up the layer order, or to a folder
-# its layer does not list (LAYERS below, the same as core/CMakeLists.txt and
-# tests/project/include_graph_test.cc), is printed with its file and line,
+# its layer does not list (read from core/CMakeLists.txt's drape_core_layer
+# lines, as tests/project/include_graph_test.cc reads them), is printed with its file and line,
 # drawn red, and the script exits 1. Standard library only.
 
 import argparse
@@ -26,28 +26,38 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT_DIR = os.path.join(ROOT, "docs", "architecture")
 SCANNED = ["core", "ui/render", "ui/widgets", "app"]
 
-CORE = ["core/" + f for f in
-        ("geometry", "model", "mechanics", "linalg", "fe", "contact",
-         "continuation", "solve", "io")]
+def core_layers():
+    """core's folders as core/CMakeLists.txt declares them, in its order:
+    `drape_core_layer(folder below…)` → [(folder, [below…])]. The layers are
+    written once, there; tests/project/include_graph_test.cc reads them too."""
+    layers = []
+    with open(os.path.join(ROOT, "core", "CMakeLists.txt"), encoding="utf-8") as f:
+        for line in f:
+            m = re.match(r"drape_core_layer\(([^)]*)\)", line)
+            if m:
+                words = m.group(1).split()
+                layers.append((words[0], words[1:]))
+    return layers
 
-# Each folder, its rank (0 at the bottom) and the folders it may include
-# besides itself. Keep in step with core/CMakeLists.txt and CoreLayers() in
-# tests/project/include_graph_test.cc.
-LAYERS = {
-    "core/geometry": (0, []),
-    "core/model": (0, []),
-    "core/mechanics": (0, []),
-    "core/linalg": (0, []),
-    "core/fe": (1, ["core/model", "core/mechanics"]),
-    "core/contact": (2, ["core/fe", "core/geometry", "core/model"]),
-    "core/continuation": (3, ["core/contact", "core/fe", "core/linalg"]),
-    "core/solve": (4, ["core/continuation", "core/contact", "core/fe",
-                       "core/mechanics", "core/model"]),
-    "core/io": (5, ["core/solve", "core/fe", "core/mechanics", "core/model"]),
-    "ui/render": (6, CORE),
-    "ui/widgets": (7, CORE + ["ui/render"]),
-    "app": (8, CORE + ["ui/render", "ui/widgets"]),
-}
+
+def layer_table():
+    """Each folder: (rank, the folders it may include). A core folder's rank
+    is one above the highest it may include (0 at the bottom); ui/render,
+    ui/widgets and app sit on top, in that order."""
+    table = {}
+    for folder, below in core_layers():
+        deps = ["core/" + b for b in below]
+        rank = 1 + max((table[d][0] for d in deps), default=-1)
+        table["core/" + folder] = (rank, deps)
+    core = list(table)
+    top = 1 + max(rank for rank, _ in table.values())
+    table["ui/render"] = (top, core)
+    table["ui/widgets"] = (top + 1, core + ["ui/render"])
+    table["app"] = (top + 2, core + ["ui/render", "ui/widgets"])
+    return table
+
+
+LAYERS = layer_table()
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 
