@@ -18,7 +18,7 @@ export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer_leaks.supp:print_suppressions=0"
 cd build-asan
-# The checks labelled `slow` (tests/CMakeLists.txt: files *_slow_test.cc, each
+# The checks labelled `<label>-slow` (tests/CMakeLists.txt: files *_slow_test.cc, each
 # taking tens of seconds here and minutes under the sanitizers) are left to
 # ./test.sh, to keep .ci/run within its time; their code paths are those of
 # tests that run here. Until every one of them has moved to such a file, the
