@@ -92,7 +92,8 @@ TEST(ReaderFuzzStates, MutatedStateFilesGiveStatesOrANamedError) {
   // 2 × 2 (even quad count) and 3 × 1 (odd: a padding word), with and without records.
   const std::vector<std::string> seeds = {
       StateFileBytes(2, 2, 3), StateFileBytes(3, 1, 2), StateFileBytes(1, 1, 0)};
-  Mutator mutator(424242, {"\x00\x01\xff\x7f\x80", {"DRAPESTA", std::string(8, '\0')}, true});
+  Mutator mutator(424242,
+                  {test::Bytes("\x00\x01\xff\x7f\x80"), {"DRAPESTA", std::string(8, '\0')}, true});
   FuzzTally tally{"states.bin"};
   const int inputs = FuzzInputs();
   for (int i = 0; i < inputs; ++i) {
