@@ -204,7 +204,7 @@ void ExpectSoundRecord(const RunRecord& r, const std::string& input) {
 TEST_F(ReaderFuzzResult, MutatedFoldersGiveARecordOrANamedError) {
   Mutator text_mutator(
       9001, {"{}[],:\"0123456789.-eE \\tnul/x", {"1e999", "-1e999", "\"steps\"", "null"}});
-  Mutator binary_mutator(9002, {"\x00\x01\xff\x7f\x80", {"DRAPESTA"}, true});
+  Mutator binary_mutator(9002, {test::Bytes("\x00\x01\xff\x7f\x80"), {"DRAPESTA"}, true});
   const fs::path folder = *dir_ / "fuzz";
   fs::create_directories(folder);
   test::FuzzTally tally{"result folders (result.json, states.bin)"};

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -118,10 +119,16 @@ double MidspanHeight(const Run& run, const StepState& s) {
   return sum / run.midspan.size();
 }
 
+// How close a run must come to the closed forms: about three times what was
+// measured (the measurement in a comment at each call).
+struct Within {
+  double lambda;  // of the located bifurcation to Euler's, relative (the mesh's
+                  // own discretisation error included)
+  double height;  // of the midspan's rise to the elastica's at every step [L]
+};
+
 // Checks the run against the elastica; returns the located λ over Euler's.
-// `lambda_tolerance`: how far the located bifurcation may lie from Euler's
-// (the mesh's own discretisation error included).
-double ExpectElastica(const PushedStrip& p, double lambda_tolerance = 0.01) {
+double ExpectElastica(const PushedStrip& p, const Within& within) {
   SCOPED_TRACE(p.Label());
   const double ei = kModulus * kWidth * std::pow(kThickness, 3) / 12;
   const double ea = kModulus * kWidth * kThickness;
@@ -141,7 +148,7 @@ double ExpectElastica(const PushedStrip& p, double lambda_tolerance = 0.01) {
     return NAN;
   }
 
-  // One bifurcation, located within 1 % of Euler's, switched to a stable branch.
+  // One bifurcation, located near Euler's, switched to a stable branch.
   const StabilityEvent& e = run.summary.stability_events.front();
   std::printf("  %s\n  Euler: lambda %.6g (Δ_E/L = %.4g)\n",
               Describe(e).c_str(),
@@ -151,7 +158,8 @@ double ExpectElastica(const PushedStrip& p, double lambda_tolerance = 0.01) {
   EXPECT_EQ(e.branch, Branch::kStable);
   EXPECT_EQ(e.negative_pivots_before, 0);
   EXPECT_GE(e.negative_pivots_fundamental, 1);
-  EXPECT_NEAR(e.lambda / euler_lambda, 1.0, lambda_tolerance);
+  std::printf("  located lambda / Euler's - 1 = %.3g\n", e.lambda / euler_lambda - 1);
+  EXPECT_NEAR(e.lambda / euler_lambda, 1.0, within.lambda);
 
   std::printf("  %4s %10s %9s %9s %6s\n", "step", "D/L", "d_FE/L", "d_ex/L", "negpiv");
   int compared = 0;
@@ -165,7 +173,7 @@ double ExpectElastica(const PushedStrip& p, double lambda_tolerance = 0.01) {
     const double fe = MidspanHeight(run, s) / kLength;
     std::printf("  %4d %10.4e %9.6f %9.6f %6d\n", s.step, travel, fe, exact, s.negative_pivots);
     worst = std::max(worst, std::abs(fe - exact));
-    EXPECT_NEAR(fe, exact, 0.005) << "step " << s.step << ", Δ/L = " << travel;
+    EXPECT_NEAR(fe, exact, within.height) << "step " << s.step << ", Δ/L = " << travel;
     ++compared;
   }
   std::printf("  %d steps from Δ/L = 1e-3 to %.2f, worst |δ_FE − δ_ex| = %.2e L\n",
@@ -177,23 +185,29 @@ double ExpectElastica(const PushedStrip& p, double lambda_tolerance = 0.01) {
   return e.lambda / euler_lambda;
 }
 
+// 80 × 1 elements. Measured: the pinned strip's bifurcation 0.044 % above
+// Euler's, its rise within 4.3e-5 L of the elastica's; the clamped strip's
+// 0.100 % and 1.73e-4 L (the same at 30° and under load control).
+constexpr Within kPinned80{.lambda = 1.3e-3, .height = 1.3e-4};
+constexpr Within kClamped80{.lambda = 3e-3, .height = 5e-4};
+
 TEST(Bifurcation, PerfectPinnedStripTakesTheElastica) {
-  ExpectElastica({.clamped = false});
+  ExpectElastica({.clamped = false}, kPinned80);
 }
 
 TEST(Bifurcation, PerfectClampedStripTakesTheElastica) {
-  ExpectElastica({.clamped = true});
+  ExpectElastica({.clamped = true}, kClamped80);
 }
 
 // Under load (displacement) control the bifurcation is located and switched
 // the same way; the steps then go on under load control from the branch.
 TEST(Bifurcation, StripUnderLoadControlTakesTheElastica) {
-  ExpectElastica({.clamped = true, .control = StepControl::kLoad});
+  ExpectElastica({.clamped = true, .control = StepControl::kLoad}, kClamped80);
 }
 
 TEST(Bifurcation, StripAtThirtyDegreesInThePlaneTakesTheElastica) {
-  ExpectElastica({.clamped = false, .angle_deg = 30});
-  ExpectElastica({.clamped = true, .angle_deg = 30});
+  ExpectElastica({.clamped = false, .angle_deg = 30}, kPinned80);
+  ExpectElastica({.clamped = true, .angle_deg = 30}, kClamped80);
 }
 
 // Twenty elements along resolve the pinned strip's half-wave well, but the
@@ -201,18 +215,25 @@ TEST(Bifurcation, StripAtThirtyDegreesInThePlaneTakesTheElastica) {
 // 1.7 % above Euler's, and on 40 × 3 0.4 % (80 × 1: 0.1 %) — the h²
 // convergence of the FE critical load. So the clamped 3 × 20 strip is held
 // to Euler's within 2 %, and its Richardson extrapolation from 20 and 40
-// elements (order 2) within 0.2 %: the locator itself is as exact as the
+// elements (order 2) within 0.08 %: the locator itself is as exact as the
 // finer runs show.
+//
+// Measured (λ over Euler's − 1, largest rise error): pinned 20 × 3 0.43 %,
+// 7.2e-4 L; clamped 20 × 3 1.66 %, 2.9e-3 L (held to 2 % and 5e-3 L, less
+// than three times that); clamped 40 × 3 0.43 % (held to 1 %), 7.2e-4 L;
+// extrapolated 0.026 %.
 TEST(Bifurcation, ThreeByTwentyMeshTakesTheElastica) {
-  ExpectElastica({.clamped = false, .nx = 20, .ny = 3});
-  const double coarse = ExpectElastica({.clamped = true, .nx = 20, .ny = 3}, 0.02);
-  const double fine = ExpectElastica({.clamped = true, .nx = 40, .ny = 3});
+  ExpectElastica({.clamped = false, .nx = 20, .ny = 3}, {.lambda = 1.3e-2, .height = 2.2e-3});
+  const double coarse =
+      ExpectElastica({.clamped = true, .nx = 20, .ny = 3}, {.lambda = 0.02, .height = 5e-3});
+  const double fine =
+      ExpectElastica({.clamped = true, .nx = 40, .ny = 3}, {.lambda = 0.01, .height = 2.2e-3});
   const double extrapolated = fine + (fine - coarse) / 3;
   std::printf("clamped: lambda/lambda_E %.5f (20 x 3), %.5f (40 x 3), extrapolated %.5f\n",
               coarse,
               fine,
               extrapolated);
-  EXPECT_NEAR(extrapolated, 1.0, 0.002);
+  EXPECT_NEAR(extrapolated, 1.0, 8e-4);
 }
 
 }  // namespace
@@ -230,6 +251,10 @@ namespace {
 // the anticlastic restraint), and past it bends cylindrically, its midline
 // on the pinned elastica (the elastica's shape does not depend on the
 // bending stiffness).
+// The centre's rise against the pinned elastica's: measured within
+// 2.04e-4 L at every step past the switch.
+constexpr double kSheetHeight = 6e-4;
+
 TEST(Bifurcation, SheetPushedInPlaneBucklesOutOfPlaneOntoAStableBranch) {
   const double l = 0.2, h = 5e-4, nu = 0.3, push = 0.1;  // push: travel over L
   Scene scene;
@@ -272,6 +297,7 @@ TEST(Bifurcation, SheetPushedInPlaneBucklesOutOfPlaneOntoAStableBranch) {
   EXPECT_LT(critical, plate * 1.01);
 
   int compared = 0;
+  double worst = 0;
   for (const StepState& s : steps) {
     if (s.step < e.step) continue;
     EXPECT_EQ(s.negative_pivots, 0) << "step " << s.step;
@@ -279,9 +305,11 @@ TEST(Bifurcation, SheetPushedInPlaneBucklesOutOfPlaneOntoAStableBranch) {
     if (travel < 1e-3) continue;
     const double exact = test::ClosedFormAtShortening(travel - critical).height;
     const double fe = std::abs(s.probes.front().value.z()) / l;
-    EXPECT_NEAR(fe, exact, 0.005) << "step " << s.step;
+    worst = std::max(worst, std::abs(fe - exact));
+    EXPECT_NEAR(fe, exact, kSheetHeight) << "step " << s.step;
     ++compared;
   }
+  std::printf("  %d steps, worst |δ_FE − δ_ex| = %.2e L\n", compared, worst);
   EXPECT_GE(compared, 5);
   EXPECT_GT(std::abs(steps.back().probes.front().value.z()), 0.15 * l);  // well out of plane
 }
@@ -394,13 +422,14 @@ TEST(Bifurcation, ShallowArchTakesTheAntisymmetricBranchAtTheSecondEulerThrust) 
   EXPECT_EQ(e.branch, Branch::kStable);
   ASSERT_GE(e.step, 2);
   // The located point (the step before the switch) carries the thrust N₂.
+  // Measured: H/N₂ = 1.00062 there and at most 1.00072 along the branch.
   const ArchPoint& at = path[e.step - 2];
-  EXPECT_NEAR(at.thrust, 1.0, 0.01);
+  EXPECT_NEAR(at.thrust, 1.0, 2e-3);
   EXPECT_NEAR(at.left, at.right, 1e-9);  // still symmetric there
   EXPECT_LT(at.force, 0.9 * limit_force) << "the bifurcation comes before the limit point";
   // On the branch: the thrust stays N₂, the arch leans over, nothing unstable.
   for (size_t i = e.step - 1; i < path.size(); ++i) {
-    EXPECT_NEAR(path[i].thrust, 1.0, 0.01) << "step " << i + 1;
+    EXPECT_NEAR(path[i].thrust, 1.0, 2e-3) << "step " << i + 1;
     EXPECT_EQ(path[i].negative_pivots, 0) << "step " << i + 1;
   }
   const double a = 10 * 5e-4 / std::sqrt(12.0);
@@ -458,7 +487,7 @@ TEST(CriticalModes, CompressedClampedStripGivesEulersFirstMode) {
   std::printf("eigenvalue %.3e, correlation with 1 - cos(2 pi x/L): %.6f\n",
               modes[0].eigenvalue,
               correlation);
-  EXPECT_GT(correlation, 0.9999);
+  EXPECT_GT(correlation, 0.99999);  // measured 0.999997
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // cases (a node asked to be in two places, nothing left holding the fabric).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -96,18 +97,32 @@ TEST(PathFollowing, AccelerationNeedsTenTimesFewerSteps) {
   ASSERT_TRUE(fast.summary.IsComplete());
   ASSERT_TRUE(slow.summary.IsComplete());
   EXPECT_GE(slow.summary.steps, 10 * fast.summary.steps);
-  // Both carry the end to the same place; the hanging loop below may settle
-  // slightly differently (the R stage crosses buckling points, see the
-  // stability events), so it is only printed.
-  EXPECT_LT((Probe(fast.steps.back(), "end") - Probe(slow.steps.back(), "end")).norm(), 1e-12);
-  const Eigen::Vector3d a = Probe(fast.steps.back(), "fold"), b = Probe(slow.steps.back(), "fold");
-  std::printf("  fold probe: with (%.5f, %.5f, %.5f), without (%.5f, %.5f, %.5f) m\n",
-              a.x(),
-              a.y(),
-              a.z(),
-              b.x(),
-              b.y(),
-              b.z());
+  // Both end in the same state (docs/validation.md §5, the no-table
+  // column): every node's position and director, not only the gripped end
+  // the stages carry to the same place by construction. Measured: 1.02e-10 m
+  // and 4.3e-9 (each run converged to the scene's tolerance, 1e-6); held to
+  // about three times that.
+  const ShellState &a = fast.steps.back().state, &b = slow.steps.back().state;
+  ASSERT_EQ(a.NodeCount(), b.NodeCount());
+  double position = 0, director = 0;
+  for (int i = 0; i < a.NodeCount(); ++i) {
+    position = std::max(position, (a.positions.row(i) - b.positions.row(i)).norm());
+    director = std::max(director, (a.Director(i) - b.Director(i)).norm());
+  }
+  const Eigen::Vector3d p = Probe(fast.steps.back(), "fold"), q = Probe(slow.steps.back(), "fold");
+  std::printf(
+      "  end states: largest node distance %.3g m, director difference %.3g; fold probe "
+      "with (%.5f, %.5f, %.5f), without (%.5f, %.5f, %.5f) m\n",
+      position,
+      director,
+      p.x(),
+      p.y(),
+      p.z(),
+      q.x(),
+      q.y(),
+      q.z());
+  EXPECT_LT(position, 3e-10);
+  EXPECT_LT(director, 1.3e-8);
 }
 
 TEST(PathFollowing, GripperTurnedTwoFullTurnsReturnsTheStripToItsStart) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -19,6 +20,11 @@ namespace {
 Scene CornerLift() {
   return ReadScene((test::SourceDir() / "tests" / "data" / "corner-lift-20x20.json").string());
 }
+
+// How far a frame may be from the equilibrium it previews [m], 5e-4 of the
+// part's size: the frames of FramesFollowTheHandleNearEquilibrium were
+// measured at most 2.7e-5 m from it (the workbench's, 7e-5 m).
+constexpr double kFrameDistance = 1e-4;
 
 double LargestDistance(const ShellState& a, const ShellState& b) {
   return (a.positions - b.positions).rowwise().norm().maxCoeff();
@@ -36,14 +42,19 @@ DragFrame Settle(GripperDrag& drag, double tolerance) {
   return frame;
 }
 
+// Every tenth frame, the whole fabric against the equilibrium a frame
+// previews: the dragged scene solved from the flat sheet to its tolerance
+// (1e-8), the gripper moved to the frame's offset. A frame stops at 1e-4 of
+// the force level (DragSettings::tolerance): measured 2.5e-6 to 2.7e-5 m
+// from the equilibrium at frames 10 to 40 (5 cm of lift).
 TEST(GripperDrag, FramesFollowTheHandleNearEquilibrium) {
   const Scene scene = CornerLift();
-  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  const SolverOptions options = SolverOptions::FromScene(scene.solver);
+  ShellSolver solver(scene, options);
   ASSERT_TRUE(solver.Solve({}).IsComplete());
-  const ShellState start = solver.state();
   GripperDrag drag(solver.BasisForDrag("corner"), DragSettings{});
   const Eigen::Vector3d by(0, 0, 0.05);
-  const int corner = solver.model().grippers[0].nodes.front();
+  double worst = 0;
   for (int f = 1; f <= 40; ++f) {
     const DragFrame frame = drag.MoveTo(by * f / 40.0);
     EXPECT_EQ(frame.frame, f);
@@ -51,12 +62,19 @@ TEST(GripperDrag, FramesFollowTheHandleNearEquilibrium) {
     // The bound a frame is held to (DragSettings::worst_ratio).
     EXPECT_LE(frame.residual_ratio, 1e-2) << "frame " << f;
     EXPECT_GE(frame.factorizations, 1);
-    // Where the gripper is, the corner node is.
-    EXPECT_NEAR((drag.state().positions.row(corner) - start.positions.row(corner)).norm(),
-                frame.offset.norm(),
-                1e-12);
+    if (f % 10 != 0) continue;
+    ShellSolver plain(DraggedScene(scene, "corner", frame.offset), options);
+    ASSERT_TRUE(plain.Solve({}).IsComplete()) << "frame " << f;
+    const double distance = LargestDistance(drag.state(), plain.state());
+    std::printf("frame %d: residual ratio %.3g, %.3g m from the equilibrium\n",
+                f,
+                frame.residual_ratio,
+                distance);
+    EXPECT_LT(distance, kFrameDistance) << "frame " << f;
+    worst = std::max(worst, distance);
   }
   EXPECT_NEAR((drag.offset() - by).norm(), 0, 1e-15) << "the gripper caught up with the handle";
+  std::printf("largest distance %.3g m\n", worst);
 }
 
 TEST(GripperDrag, AFrameOutOfTimeLeavesTheRestToTheNext) {

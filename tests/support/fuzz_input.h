@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -34,9 +35,16 @@ inline int FuzzInputs(int fallback = 2000) {
   return static_cast<int>(value);
 }
 
+// The bytes of a string literal, its NUL bytes included: a literal passed as
+// a C string ends at its first NUL ("\x00\x01" is then empty).
+template <std::size_t N>
+std::string Bytes(const char (&literal)[N]) {
+  return std::string(literal, N - 1);
+}
+
 // What the format's readers are fed beyond single bytes.
 struct FuzzAlphabet {
-  std::string bytes;                // replaced and inserted one at a time
+  std::string bytes;                // replaced and inserted one at a time (Bytes() for NULs)
   std::vector<std::string> tokens;  // inserted or written over whole
   bool binary = false;              // also overwrite 4- and 8-byte words
   // Written over a whole number of the text: values that overflow what a

@@ -33,6 +33,9 @@ namespace drape {
 namespace {
 
 const double kSize = 0.2;  // the corner-lift square's side [m]
+// How far a frame may be from the equilibrium it previews [m]: the frames
+// below were measured at most 7e-5 m from it.
+const double kFrameDistance = 1e-3 * kSize;
 
 std::string CornerLift() {
   return (test::SourceDir() / "tests" / "data" / "corner-lift-20x20.json").string();
@@ -82,10 +85,20 @@ TEST_F(LiveDragTest, TheFabricFollowsAGripperDraggedAcross40FramesAndTheReleaseI
     const auto frame = frames.last().at(0).value<DragFrame>();
     ASSERT_TRUE(std::isfinite(frame.residual_ratio)) << "frame " << f;
     EXPECT_LE(frame.residual_ratio, 1e-2) << "frame " << f;
-    // The fabric is where the frame says the gripper went.
     const ShellState* state = live()->draggedState();
     ASSERT_NE(state, nullptr);
-    EXPECT_NEAR((state->positions.row(corner).transpose() - start - frame.offset).norm(), 0, 1e-12);
+    // Every tenth frame, the fabric shown against the equilibrium it
+    // previews: the scene with the gripper moved by the frame's offset,
+    // solved from the start (frames stop at 1e-4 of the force level;
+    // measured 2.7e-5 to 7e-5 m at frames 10 to 40).
+    if (f % 10 != 0) continue;
+    const Scene at_frame = DraggedScene(ReadScene(CornerLift()), "corner", frame.offset);
+    ShellSolver solved(at_frame, SolverOptions::FromScene(at_frame.solver));
+    ASSERT_TRUE(solved.Solve({}).IsComplete()) << "frame " << f;
+    const double distance =
+        (state->positions - solved.state().positions).rowwise().norm().maxCoeff();
+    std::printf("frame %d: %.3g m from the equilibrium\n", f, distance);
+    EXPECT_LT(distance, kFrameDistance) << "frame " << f;
   }
   EXPECT_NEAR((live()->lastFrame()->offset - by).norm(), 0, 1e-9) << "caught up with the handle";
 
