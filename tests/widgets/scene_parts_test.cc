@@ -1,20 +1,37 @@
 // Each change of the scene says which of its top-level parts changed (the
-// scene file's keys), undo and redo as the edit did.
+// scene file's keys), undo and redo as the edit did, and each editor of the
+// workbench redraws only for the parts it shows: an edit of the material
+// leaves the supports, grippers, obstacles and stages alone.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
+#include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QSignalSpy>
+#include <QTest>
 #include <QUndoStack>
 
 #include <nlohmann/json.hpp>
 
 #include "core/io/scene_writer.h"
 #include "support/test_paths.h"
+#include "ui/widgets/holds_panel.h"
+#include "ui/widgets/loads_panel.h"
+#include "ui/widgets/main_window.h"
+#include "ui/widgets/model_tree.h"
+#include "ui/widgets/move_editor.h"
+#include "ui/widgets/obstacles_panel.h"
+#include "ui/widgets/probes_panel.h"
+#include "ui/widgets/property_panel.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
+#include "ui/widgets/stages_panel.h"
 #include "widgets/gui_test.h"
 
 namespace drape {
@@ -115,6 +132,102 @@ TEST_F(Widgets, EditsUndoAndRedoSayTheSamePartsAndOpeningSaysAll) {
   ASSERT_EQ(parts.count(), 1);
   EXPECT_EQ(parts.takeLast().at(0).value<Parts>(), edited);
   EXPECT_EQ(changed.count(), 4);  // "anything changed" goes on as before
+}
+
+class EditorRefreshes : public Widgets {
+ protected:
+  void SetUp() override {
+    Widgets::SetUp();
+    if (IsSkipped()) return;
+    window_ = std::make_unique<MainWindow>();
+    ASSERT_TRUE(window_->openScene(StripFold()));
+    editors_ = {{"supports", window_->supports()},
+                {"grippers", window_->grippers()},
+                {"loads", window_->loads()},
+                {"obstacles", window_->obstacles()},
+                {"stages", window_->stages()},
+                {"moves", window_->stages()->moves()},
+                {"probes", window_->probes()},
+                {"tree", window_->tree()}};
+    for (const auto& [name, editor] : editors_)
+      ASSERT_NE(ScenePartWatch::of(editor), nullptr) << name << " does not follow the scene";
+  }
+  void TearDown() override { window_.reset(); }
+
+  // How many times each editor redrew from the scene since the last call.
+  std::map<std::string, int> Refreshes() {
+    std::map<std::string, int> since;
+    for (const auto& [name, editor] : editors_) {
+      const int now = ScenePartWatch::of(editor)->refreshes();
+      since[name] = now - counted_[name];
+      counted_[name] = now;
+    }
+    return since;
+  }
+  // Only `redrawn` redrew, once each.
+  void ExpectOnly(const std::set<std::string>& redrawn, const std::string& after) {
+    for (const auto& [name, count] : Refreshes())
+      EXPECT_EQ(count, redrawn.count(name) ? 1 : 0) << name << " after " << after;
+  }
+
+  std::unique_ptr<MainWindow> window_;
+  std::map<std::string, QObject*> editors_;
+  std::map<std::string, int> counted_;
+};
+
+TEST_F(EditorRefreshes, AMaterialEditRedrawsTheTreeOnly) {
+  Refreshes();
+  QLineEdit* thickness = window_->properties()->thickness()->edit();
+  thickness->setText("0.6 mm");
+  emit thickness->editingFinished();
+  ASSERT_NEAR(window_->document()->scene().material.thickness, 0.6e-3, 1e-15);
+  ExpectOnly({"tree"}, "the thickness was typed");
+  window_->document()->undoStack()->undo();
+  ExpectOnly({"tree"}, "its undo");
+  // Redrawn, not merely counted: the field shows the scene's thickness again.
+  EXPECT_NE(thickness->text().toStdString(), "0.6 mm");
+  window_->document()->undoStack()->redo();
+  ExpectOnly({"tree"}, "its redo");
+  EXPECT_EQ(thickness->text().toStdString(), "0.6 mm");
+}
+
+TEST_F(EditorRefreshes, OpeningASceneRedrawsEveryEditor) {
+  Refreshes();
+  ASSERT_TRUE(window_->openScene(StripFold()));
+  std::set<std::string> all;
+  for (const auto& [name, editor] : editors_) all.insert(name);
+  ExpectOnly(all, "opening");
+}
+
+// Each editor hears of the parts it shows, and of no others: a move chooses
+// what it carries from the grippers and the obstacles; the obstacles' panel
+// shows the contact too, which the tree does not.
+TEST_F(EditorRefreshes, EachEditorRedrawsForThePartsItShows) {
+  Refreshes();
+  ASSERT_TRUE(window_->properties()->setOutline("rectangle", "40 cm, 2 cm"))
+      << window_->properties()->fabricMessage().toStdString();
+  ExpectOnly({"tree"}, "the outline was typed");
+  ASSERT_TRUE(window_->grippers()->add("point", 0, -0.05, 0))
+      << window_->grippers()->message().toStdString();
+  ExpectOnly({"grippers", "moves", "tree"}, "a gripper was added");
+  ASSERT_TRUE(window_->supports()->add("point", 0, 0.05, 0))
+      << window_->supports()->message().toStdString();
+  ExpectOnly({"supports", "tree"}, "a support was added");
+  ASSERT_TRUE(window_->loads()->add("point", "0, 0, -1 gf", "0, 0, 0", 0.1, 0))
+      << window_->loads()->message().toStdString();
+  ExpectOnly({"loads", "tree"}, "a load was added");
+  ASSERT_TRUE(window_->obstacles()->add("sphere")) << window_->obstacles()->message().toStdString();
+  ExpectOnly({"obstacles", "moves", "tree"}, "an obstacle was added");
+  ASSERT_TRUE(window_->obstacles()->setContact("auto", "0.3"))
+      << window_->obstacles()->message().toStdString();
+  ExpectOnly({"obstacles"}, "the friction was typed");
+  ASSERT_TRUE(window_->probes()->add(0.01, 0)) << window_->probes()->message().toStdString();
+  ExpectOnly({"probes", "tree"}, "a probe was added");
+  window_->properties()->timeLimit()->setValue(60);
+  emit window_->properties()->timeLimit()->editingFinished();
+  ExpectOnly({"tree"}, "the time limit was typed");
+  ASSERT_TRUE(window_->stages()->addStage("gravity")) << window_->stages()->message().toStdString();
+  ExpectOnly({"stages", "moves", "tree"}, "a stage was added");
 }
 
 }  // namespace
