@@ -141,7 +141,12 @@ class EditorRefreshes : public Widgets {
     if (IsSkipped()) return;
     window_ = std::make_unique<MainWindow>();
     ASSERT_TRUE(window_->openScene(StripFold()));
-    editors_ = {{"supports", window_->supports()},
+    PropertyPanel* properties = window_->properties();
+    editors_ = {{"fabric", properties->fabric()},
+                {"imperfection", properties->fabric()->imperfection()},
+                {"material", properties->material()},
+                {"solver", properties->solver()},
+                {"supports", window_->supports()},
                 {"grippers", window_->grippers()},
                 {"loads", window_->loads()},
                 {"obstacles", window_->obstacles()},
@@ -175,19 +180,19 @@ class EditorRefreshes : public Widgets {
   std::map<std::string, int> counted_;
 };
 
-TEST_F(EditorRefreshes, AMaterialEditRedrawsTheTreeOnly) {
+TEST_F(EditorRefreshes, AMaterialEditRedrawsTheMaterialEditorAndTheTreeOnly) {
   Refreshes();
   QLineEdit* thickness = window_->properties()->thickness()->edit();
   thickness->setText("0.6 mm");
   emit thickness->editingFinished();
   ASSERT_NEAR(window_->document()->scene().material.thickness, 0.6e-3, 1e-15);
-  ExpectOnly({"tree"}, "the thickness was typed");
+  ExpectOnly({"material", "tree"}, "the thickness was typed");
   window_->document()->undoStack()->undo();
-  ExpectOnly({"tree"}, "its undo");
+  ExpectOnly({"material", "tree"}, "its undo");
   // Redrawn, not merely counted: the field shows the scene's thickness again.
   EXPECT_NE(thickness->text().toStdString(), "0.6 mm");
   window_->document()->undoStack()->redo();
-  ExpectOnly({"tree"}, "its redo");
+  ExpectOnly({"material", "tree"}, "its redo");
   EXPECT_EQ(thickness->text().toStdString(), "0.6 mm");
 }
 
@@ -206,7 +211,7 @@ TEST_F(EditorRefreshes, EachEditorRedrawsForThePartsItShows) {
   Refreshes();
   ASSERT_TRUE(window_->properties()->setOutline("rectangle", "40 cm, 2 cm"))
       << window_->properties()->fabricMessage().toStdString();
-  ExpectOnly({"tree"}, "the outline was typed");
+  ExpectOnly({"fabric", "imperfection", "tree"}, "the outline was typed");
   ASSERT_TRUE(window_->grippers()->add("point", 0, -0.05, 0))
       << window_->grippers()->message().toStdString();
   ExpectOnly({"grippers", "moves", "tree"}, "a gripper was added");
@@ -225,7 +230,7 @@ TEST_F(EditorRefreshes, EachEditorRedrawsForThePartsItShows) {
   ExpectOnly({"probes", "tree"}, "a probe was added");
   window_->properties()->timeLimit()->setValue(60);
   emit window_->properties()->timeLimit()->editingFinished();
-  ExpectOnly({"tree"}, "the time limit was typed");
+  ExpectOnly({"solver", "tree"}, "the time limit was typed");
   ASSERT_TRUE(window_->stages()->addStage("gravity")) << window_->stages()->message().toStdString();
   ExpectOnly({"stages", "moves", "tree"}, "a stage was added");
 }
