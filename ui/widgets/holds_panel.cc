@@ -14,6 +14,7 @@
 #include "core/model/scene.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/selection_rule.h"
 
 namespace drape {
@@ -87,7 +88,11 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
     fixity_->setCurrentIndex(holds[i].fixity == Fixity::kClamp ? 1 : 0);
     rule_->show(holds[i].select);
   });
-  connect(document_, &SceneDocument::changed, this, &HoldsPanel::refresh);
+  new ScenePartWatch(
+      document_,
+      role == Role::kSupports ? SceneDocument::Part::kSupports : SceneDocument::Part::kGrippers,
+      [this] { refresh(); },
+      this);
   refresh();
 }
 

@@ -15,6 +15,7 @@
 #include "core/model/scene.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/selection_rule.h"
 #include "ui/widgets/typed_json.h"
 
@@ -55,7 +56,8 @@ LoadsPanel::LoadsPanel(SceneDocument* document, QWidget* parent)
       apply, &QPushButton::clicked, this, [this] { setForce(force_->text(), moment_->text()); });
   connect(remove, &QPushButton::clicked, this, &LoadsPanel::removeSelected);
   connect(list_, &QListWidget::currentRowChanged, this, &LoadsPanel::refresh);
-  connect(document_, &SceneDocument::changed, this, &LoadsPanel::refresh);
+  new ScenePartWatch(
+      document_, SceneDocument::Part::kLoads, [this] { refresh(); }, this);
   refresh();
 }
 

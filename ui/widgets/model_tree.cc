@@ -5,6 +5,7 @@
 #include "core/model/overloaded.h"
 #include "core/model/scene.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/selection_rule.h"
 #include "ui/widgets/typed_json.h"
 
@@ -47,6 +48,14 @@ QString OutlineSummary(const Fabric& f, UnitSystem system) {
       f.outline);
 }
 
+// The parts the tree sums up: nearly any edit changes it, but not the name,
+// description, contact or gravity, which it does not show.
+SceneDocument::Parts SummedUp() {
+  using P = SceneDocument::Part;
+  return P::kFabric | P::kMaterial | P::kSupports | P::kGrippers | P::kLoads | P::kObstacles |
+         P::kStages | P::kProbes | P::kSolver;
+}
+
 }  // namespace
 
 ModelTree::ModelTree(SceneDocument* document, QWidget* parent)
@@ -65,7 +74,8 @@ ModelTree::ModelTree(SceneDocument* document, QWidget* parent)
                 item->data(0, kIndexRole).toInt(),
                 item->data(0, kMoveRole).toInt());
   });
-  connect(document_, &SceneDocument::changed, this, &ModelTree::refresh);
+  new ScenePartWatch(
+      document_, SummedUp(), [this] { refresh(); }, this);
   refresh();
 }
 

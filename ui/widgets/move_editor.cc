@@ -13,6 +13,7 @@
 #include "core/model/overloaded.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/typed_json.h"
 
 namespace drape {
@@ -91,7 +92,13 @@ MoveEditor::MoveEditor(SceneDocument* document, QWidget* parent)
   for (QLineEdit* e : {first_, second_, third_})
     connect(e, &QLineEdit::editingFinished, this, &MoveEditor::CommitFields);
   connect(list_, &QListWidget::currentRowChanged, this, &MoveEditor::refresh);
-  connect(document_, &SceneDocument::changed, this, &MoveEditor::refresh);
+  // What a move carries is chosen from the grippers and the obstacles.
+  new ScenePartWatch(
+      document_,
+      SceneDocument::Part::kStages | SceneDocument::Part::kGrippers |
+          SceneDocument::Part::kObstacles,
+      [this] { refresh(); },
+      this);
   refresh();
 }
 

@@ -18,6 +18,7 @@
 #include "core/model/scene.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/typed_json.h"
 
 namespace drape {
@@ -81,7 +82,11 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   connect(remove, &QPushButton::clicked, this, &ObstaclesPanel::removeSelected);
   connect(apply, &QPushButton::clicked, this, [this] { applyText(text_->toPlainText()); });
   connect(list_, &QListWidget::currentRowChanged, this, &ObstaclesPanel::refresh);
-  connect(document_, &SceneDocument::changed, this, &ObstaclesPanel::refresh);
+  new ScenePartWatch(
+      document_,
+      SceneDocument::Part::kObstacles | SceneDocument::Part::kContact,
+      [this] { refresh(); },
+      this);
   refresh();
 }
 

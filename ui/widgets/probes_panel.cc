@@ -14,6 +14,7 @@
 #include "core/model/units.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/typed_json.h"
 
 namespace drape {
@@ -53,7 +54,8 @@ ProbesPanel::ProbesPanel(SceneDocument* document, QWidget* parent)
       this->add(picked_.back()[0], picked_.back()[1]);
   });
   connect(remove, &QPushButton::clicked, this, &ProbesPanel::removeSelected);
-  connect(document_, &SceneDocument::changed, this, &ProbesPanel::refresh);
+  new ScenePartWatch(
+      document_, SceneDocument::Part::kProbes, [this] { refresh(); }, this);
   refresh();
 }
 

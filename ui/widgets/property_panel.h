@@ -1,156 +1,88 @@
-// Property editors for the scene's fabric, material and solver: each field
-// shows its unit, is checked as it is committed (the same unit parser and
-// limits as the scene reader), shows what is wrong in place and keeps its
-// last valid value. Every accepted change goes to the SceneDocument as one
-// undoable edit.
+// Property editors for the scene's fabric, material and solver, one group
+// each (FabricEditor, MaterialEditor, SolverEditor), arranged one above the
+// other. Each field shows its unit, is checked as it is committed (the same
+// unit parser and limits as the scene reader), shows what is wrong in place
+// and keeps its last valid value; every accepted change goes to the
+// SceneDocument as one undoable edit, and each group redraws only when its
+// part of the scene changed.
 #pragma once
 
 #include <QWidget>
 
-#include <functional>
 #include <memory>
-#include <optional>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "core/fe/shell_model.h"
 #include "core/model/unit_system.h"
-#include "core/model/units.h"
-
-class QCheckBox;
-class QComboBox;
-class QFormLayout;
-class QLabel;
-class QLineEdit;
-class QDoubleSpinBox;
-class QSpinBox;
+#include "ui/widgets/fabric_editor.h"
+#include "ui/widgets/imperfection_editor.h"
+#include "ui/widgets/material_editor.h"
+#include "ui/widgets/mesh_summary.h"
+#include "ui/widgets/quantity_field.h"
+#include "ui/widgets/solver_editor.h"
 
 namespace drape {
 
 class SceneDocument;
-
-// A quantity typed with its unit ("0.5 mm"), accepted when it has the
-// field's dimension and passes `check` (which returns "" or what is wrong).
-// Any unit the scene reader takes for the measure is accepted; values the
-// user did not type are shown in the field's unit system.
-class QuantityField : public QWidget {
-  Q_OBJECT
- public:
-  QuantityField(Dimension dimension,
-                const QString& unit_hint,
-                std::function<QString(double)> check,
-                QWidget* parent = nullptr);
-  QuantityField(Measure measure,
-                const QString& unit_hint,
-                std::function<QString(double)> check,
-                QWidget* parent = nullptr);
-  // Shows `text` for the SI value `si`, unless the field already shows that
-  // value in the user's own unit.
-  void setValue(double si, const QString& text);
-  // Shows `si` in the unit system's unit (as setValue, keeping the user's
-  // own text for the same value while the system stays the same).
-  void setValue(double si, UnitSystem system);
-  double value() const { return value_; }
-  QLineEdit* edit() const { return edit_; }
-  QString message() const;
-
- signals:
-  void committed(double si, const QString& text);
-
- private:
-  void Commit();
-
-  Dimension dimension_;
-  std::optional<Measure> measure_;  // when the dimension alone does not say the unit
-  std::function<QString(double)> check_;
-  std::optional<UnitSystem> shown_in_;  // the system of the last setValue(si, system)
-  QLineEdit* edit_;
-  QLabel* message_;
-  double value_ = 0;
-  QString text_;
-};
 
 class PropertyPanel : public QWidget {
   Q_OBJECT
  public:
   explicit PropertyPanel(SceneDocument* document, QWidget* parent = nullptr);
 
-  // For tests and scripts: the fields by name.
-  QuantityField* thickness() const { return thickness_; }
-  QuantityField* weight() const { return weight_; }
-  QuantityField* modulus() const { return modulus_; }
-  QComboBox* outlineShape() const { return shape_; }
-  QLineEdit* outlineExtent() const { return extent_; }
-  QLineEdit* outlineCenter() const { return center_; }
-  QLineEdit* elementSize() const { return element_size_; }
-  QSpinBox* elementsX() const { return nx_; }
-  QSpinBox* elementsY() const { return ny_; }
-  QComboBox* solverPreset() const { return preset_; }
-  QuantityField* tolerance() const { return tolerance_; }
-  QSpinBox* targetIterations() const { return target_iterations_; }
-  QSpinBox* maxSteps() const { return max_steps_; }
-  QDoubleSpinBox* timeLimit() const { return time_limit_; }
-  QComboBox* branching() const { return branching_; }
-  QSpinBox* sequencing() const { return sequencing_; }
-  QCheckBox* errorEstimate() const { return error_estimate_; }
-  QLabel* meshInfo() const { return mesh_info_; }
-  // The model meshInfo() counts: the document's, never meshed here.
-  const std::shared_ptr<const ShellModel>& model() const { return model_; }
-  QString fabricMessage() const;
-  QString materialMessage() const;
-  QComboBox* membrane() const { return membrane_; }
-  QuantityField* e1() const { return e1_; }
-  QuantityField* e2() const { return e2_; }
-  QuantityField* nu12() const { return nu12_; }
-  QuantityField* g12() const { return g12_; }
-  // Isotropic ↔ orthotropic, keeping the material's stiffness (E₁ = E₂ = E,
-  // ν₁₂ = ν, G₁₂ = E/2(1 + ν); back: E = E₁, ν = ν₁₂).
-  bool setOrthotropic(bool on);
+  FabricEditor* fabric() const { return fabric_; }
+  MaterialEditor* material() const { return material_; }
+  SolverEditor* solver() const { return solver_; }
 
-  // The outline: shape "rectangle" (extent "width, height"), "disk" (extent
-  // the radius) or "polygon" (extent "x, y; x, y; …"), with its centre
-  // ("x, y"; not for polygons); units allowed. Read by the scene reader;
-  // false with its message when wrong.
-  bool setOutline(const QString& shape, const QString& extent, const QString& center = "0, 0");
-  // The target element edge of outlines meshed by size.
-  bool setElementSize(const QString& size);
-  // A small out-of-plane imperfection of the flat part (to start buckling):
-  // amplitude (typed, "0" for none), seed, pattern "smooth" or "nodal".
-  bool setImperfection(const QString& amplitude, int seed, const QString& pattern);
+  // For tests and scripts: the fields by name.
+  QuantityField* thickness() const { return material_->thickness(); }
+  QuantityField* weight() const { return material_->weight(); }
+  QuantityField* modulus() const { return material_->modulus(); }
+  QComboBox* outlineShape() const { return fabric_->outlineShape(); }
+  QLineEdit* outlineExtent() const { return fabric_->outlineExtent(); }
+  QLineEdit* outlineCenter() const { return fabric_->outlineCenter(); }
+  QLineEdit* elementSize() const { return fabric_->elementSize(); }
+  QSpinBox* elementsX() const { return fabric_->elementsX(); }
+  QSpinBox* elementsY() const { return fabric_->elementsY(); }
+  QComboBox* solverPreset() const { return solver_->preset(); }
+  QuantityField* tolerance() const { return solver_->tolerance(); }
+  QSpinBox* targetIterations() const { return solver_->targetIterations(); }
+  QSpinBox* maxSteps() const { return solver_->maxSteps(); }
+  QDoubleSpinBox* timeLimit() const { return solver_->timeLimit(); }
+  QComboBox* branching() const { return solver_->branching(); }
+  QSpinBox* sequencing() const { return solver_->sequencing(); }
+  QCheckBox* errorEstimate() const { return solver_->errorEstimate(); }
+  QLabel* meshInfo() const { return fabric_->meshInfo(); }
+  // The model meshInfo() counts: the document's, never meshed here.
+  const std::shared_ptr<const ShellModel>& model() const { return fabric_->meshInfo()->model(); }
+  QString fabricMessage() const { return fabric_->message(); }
+  // Why the last material or checked solver edit was refused.
+  QString materialMessage() const { return material_->message(); }
+  QComboBox* membrane() const { return material_->membrane(); }
+  QuantityField* e1() const { return material_->e1(); }
+  QuantityField* e2() const { return material_->e2(); }
+  QuantityField* nu12() const { return material_->nu12(); }
+  QuantityField* g12() const { return material_->g12(); }
+  bool setOrthotropic(bool on) { return material_->setOrthotropic(on); }
+  bool setOutline(const QString& shape, const QString& extent, const QString& center = "0, 0") {
+    return fabric_->setOutline(shape, extent, center);
+  }
+  bool setElementSize(const QString& size) { return fabric_->setElementSize(size); }
+  bool setImperfection(const QString& amplitude, int seed, const QString& pattern) {
+    return fabric_->imperfection()->setImperfection(amplitude, seed, pattern);
+  }
 
   UnitSystem unitSystem() const { return units_; }
 
  public slots:
-  void refresh();  // from the document's scene
+  void refresh();  // every group from the document's scene
   // Every field shows its value in `system` from now on (typing takes any unit).
   void setUnitSystem(UnitSystem system);
 
  private:
-  void EditMesh();
-  bool ApplyFabric(const QString& what, const nlohmann::json& fabric);
-
-  SceneDocument* document_;
-  QFormLayout* fabric_form_;
-  QComboBox* shape_;
-  QLineEdit *extent_, *center_, *element_size_, *imperfection_;
-  QSpinBox* seed_;
-  QComboBox* pattern_;
-  QSpinBox *nx_, *ny_;
-  QLabel *mesh_info_, *fabric_message_;
-  QuantityField *thickness_, *weight_, *modulus_, *poisson_, *angle_;
-  QuantityField *e1_, *e2_, *nu12_, *g12_;
-  QComboBox* membrane_;
-  QFormLayout* material_form_;
-  QLabel* material_message_;
-  QComboBox* preset_;
-  QComboBox* branching_;
-  QuantityField* tolerance_;
-  QSpinBox *target_iterations_, *max_steps_, *sequencing_;
-  QDoubleSpinBox* time_limit_;
-  QCheckBox* error_estimate_;
-  std::shared_ptr<const ShellModel> model_;
+  FabricEditor* fabric_;
+  MaterialEditor* material_;
+  SolverEditor* solver_;
   UnitSystem units_ = UnitSystem::kSI;
-  bool refreshing_ = false;
 };
 
 }  // namespace drape

@@ -43,6 +43,56 @@ std::shared_ptr<const ShellModel> Build(const Scene& scene) {
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {}
 
+const char* SceneDocument::key(Part part) {
+  switch (part) {
+    case Part::kName:
+      return "name";
+    case Part::kDescription:
+      return "description";
+    case Part::kFabric:
+      return "fabric";
+    case Part::kMaterial:
+      return "material";
+    case Part::kSupports:
+      return "supports";
+    case Part::kGrippers:
+      return "grippers";
+    case Part::kLoads:
+      return "loads";
+    case Part::kObstacles:
+      return "obstacles";
+    case Part::kContact:
+      return "contact";
+    case Part::kGravity:
+      return "gravity";
+    case Part::kStages:
+      return "stages";
+    case Part::kSolver:
+      return "solver";
+    case Part::kProbes:
+      return "probes";
+  }
+  return "";
+}
+
+SceneDocument::Parts SceneDocument::differences(const Scene& a, const Scene& b) {
+  Parts parts;
+  parts.setFlag(Part::kName, a.name != b.name);
+  parts.setFlag(Part::kDescription, a.description != b.description);
+  parts.setFlag(Part::kFabric, a.fabric != b.fabric);
+  parts.setFlag(Part::kMaterial, a.material != b.material);
+  parts.setFlag(Part::kSupports, a.supports != b.supports);
+  parts.setFlag(Part::kGrippers, a.grippers != b.grippers);
+  parts.setFlag(Part::kLoads, a.loads != b.loads);
+  parts.setFlag(Part::kObstacles, a.obstacles != b.obstacles);
+  parts.setFlag(Part::kContact, a.contact != b.contact);
+  parts.setFlag(Part::kGravity, a.gravity_direction != b.gravity_direction);
+  parts.setFlag(Part::kStages, a.stages != b.stages);
+  parts.setFlag(Part::kSolver, a.solver != b.solver);
+  parts.setFlag(Part::kProbes, a.probes != b.probes);
+  return parts;
+}
+
 long long SceneDocument::modelBuilds() {
   return model_builds;
 }
@@ -61,6 +111,7 @@ void SceneDocument::open(const QString& file) {
   undo_.clear();
   undo_.setClean();
   emit changed();
+  emit partsChanged(kAllParts);
 }
 
 void SceneDocument::openTemplate(const QString& file) {
@@ -150,9 +201,12 @@ void SceneDocument::Model(const Scene& scene) {
 }
 
 void SceneDocument::set(const Scene& scene) {
+  // From the scenes themselves, so an undo names what its edit named.
+  const Parts parts = differences(scene_, scene);
   Model(scene);
   scene_ = scene;
   emit changed();
+  emit partsChanged(parts);
 }
 
 }  // namespace drape

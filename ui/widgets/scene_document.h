@@ -3,7 +3,9 @@
 // change the scene only through apply(), so every edit undoes. With the
 // scene, its one shell model: built once per change of the scene (the
 // model check() built for an accepted edit is the one kept), shared by the
-// view, the panels and the run.
+// view, the panels and the run. Each change says which of the scene's
+// top-level parts it changed, so an editor of one part redraws only when
+// that part did.
 #pragma once
 
 #include <QObject>
@@ -25,6 +27,31 @@ class SceneDocument : public QObject {
   Q_OBJECT
  public:
   explicit SceneDocument(QObject* parent = nullptr);
+
+  // The scene's top-level parts, each named by its key in the scene file.
+  enum class Part {
+    kName = 1 << 0,
+    kDescription = 1 << 1,
+    kFabric = 1 << 2,
+    kMaterial = 1 << 3,
+    kSupports = 1 << 4,
+    kGrippers = 1 << 5,
+    kLoads = 1 << 6,
+    kObstacles = 1 << 7,
+    kContact = 1 << 8,
+    kGravity = 1 << 9,
+    kStages = 1 << 10,
+    kSolver = 1 << 11,
+    kProbes = 1 << 12,
+  };
+  Q_ENUM(Part)
+  Q_DECLARE_FLAGS(Parts, Part)
+  Q_FLAG(Parts)
+  static constexpr Parts kAllParts = Parts::fromInt((1 << 13) - 1);
+  // The scene file's key of `part` ("fabric", "gravity", …).
+  static const char* key(Part part);
+  // The parts in which `a` and `b` differ.
+  static Parts differences(const Scene& a, const Scene& b);
 
   const Scene& scene() const { return scene_; }
   const QString& file() const { return file_; }
@@ -80,6 +107,9 @@ class SceneDocument : public QObject {
 
  signals:
   void changed();  // after open, an edit, undo or redo
+  // Right after changed(): the parts that changed (every part on open). An
+  // undo names the parts its edit changed, as does the redo.
+  void partsChanged(drape::SceneDocument::Parts parts);
 
  private:
   friend class SceneEdit;
@@ -100,3 +130,7 @@ class SceneDocument : public QObject {
 };
 
 }  // namespace drape
+
+// Outside the namespace: declared in it, these operators would hide Qt's own
+// (Qt::CTRL | Qt::Key_E) from code in namespace drape.
+Q_DECLARE_OPERATORS_FOR_FLAGS(drape::SceneDocument::Parts)

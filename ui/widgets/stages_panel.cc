@@ -16,6 +16,7 @@
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 
 namespace drape {
 
@@ -67,7 +68,8 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   });
   connect(control_, &QComboBox::activated, this, &StagesPanel::setControl);
   connect(list_, &QListWidget::currentRowChanged, this, &StagesPanel::refresh);
-  connect(document_, &SceneDocument::changed, this, &StagesPanel::refresh);
+  new ScenePartWatch(
+      document_, SceneDocument::Part::kStages, [this] { refresh(); }, this);
   refresh();
 }
 
