@@ -21,8 +21,5 @@ cd build-asan
 # The checks labelled `<label>-slow` (tests/CMakeLists.txt: files *_slow_test.cc, each
 # taking tens of seconds here and minutes under the sanitizers) are left to
 # ./test.sh, to keep .ci/run within its time; their code paths are those of
-# tests that run here. Until every one of them has moved to such a file, the
-# rest are named here as well.
-exec ctest --output-on-failure --parallel "$jobs" -LE slow \
-  -E 'Extremes.*(mesh_200x200|thickness_1e_5_m|sheet_resting_on_dress_form)|PathFollowing.AccelerationNeedsTenTimesFewerSteps|StudyCli.ATwentyFourRunSweepResumesAfterCtrlC|PathFollowing.ABranchThatBendsBackIsNotGoneRoundForever|PathFollowing.APathThroughAReversedLoadSaysSo|DragCli.WritesEveryFrameAndTheReleasedRun' \
-  "$@"
+# tests that run here.
+exec ctest --output-on-failure --parallel "$jobs" -LE slow "$@"

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/drape_command.h"
+#include "support/temp_dir.h"
 #include "support/test_paths.h"
 
 namespace drape {
@@ -311,7 +312,8 @@ TEST(ValidateCli, GmshIsLoadedOnlyForOutlinesThatNeedIt) {
   scene["fabric"]["mesh"] = {{"size", "1 cm"}};
   scene["supports"] = {{{"name", "centre"}, {"select", {{"point", {0, 0}}}}, {"fix", "clamp"}}};
   scene.erase("probes");
-  const std::string file = ::testing::TempDir() + "/disk.json";
+  const test::TempDir dir("validate-disk");
+  const std::string file = (dir / "disk.json").string();
   std::ofstream(file) << scene.dump();
   const CommandResult r = test::RunDrape("validate " + file);
   EXPECT_EQ(r.exit_code, 0) << r.output;

@@ -1,13 +1,13 @@
 // Grippers moving along paths under arc-length continuation: the paper's
 // strip fold without its table, finite rotations of a gripper, and the bad
 // cases (a node asked to be in two places, nothing left holding the fabric).
+// The longer runs are in path_following_slow_test.cc.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <set>
 #include <vector>
 
@@ -18,51 +18,20 @@
 #include "core/model/scene_error.h"
 #include "core/model/solver_preset.h"
 #include "core/solve/shell_solver.h"
+#include "support/recorded_run.h"
 #include "support/strip_scene.h"
+#include "support/temp_dir.h"
 #include "support/test_paths.h"
 
 namespace drape {
 namespace {
 
-struct Steps {
-  SolveSummary summary;
-  std::vector<StepState> steps;
-};
-
-Steps Solve(const Scene& scene) {
-  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
-  Steps out;
-  out.summary = solver.Solve({[&](const StepState& s) {
-    out.steps.push_back(s);
-    return StepDecision::kContinue;
-  }});
-  return out;
-}
-
-Eigen::Vector3d Probe(const StepState& s, const std::string& name) {
-  for (const auto& p : s.probes)
-    if (p.name == name) return p.value;
-  ADD_FAILURE() << "no probe " << name;
-  return {};
-}
-
-void PrintStages(const char* label, const SolveSummary& summary) {
-  std::printf("  %s: %d steps, %d iterations, %.3f s\n",
-              label,
-              summary.steps,
-              summary.iterations,
-              summary.total_s);
-  for (const auto& st : summary.stages)
-    std::printf("    stage %-3s %5d steps %6d iterations %3d cut-backs\n",
-                st.name.c_str(),
-                st.steps,
-                st.iterations,
-                st.step_cuts);
-}
+using test::PrintStages;
+using test::Probe;
 
 TEST(PathFollowing, StripFoldWithoutTableCompletesTheFold) {
   const Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
-  Steps run = Solve(scene);
+  test::Outcome run = test::SolveRecorded(scene);
   PrintStages("strip fold, acceleration on", run.summary);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   // R carries the left end on a semicircle about (0, 0, 0.75 h) onto
@@ -80,49 +49,6 @@ TEST(PathFollowing, StripFoldWithoutTableCompletesTheFold) {
   EXPECT_TRUE(passed_top);
   // Without a table the middle hangs below the held ends as a loop.
   EXPECT_LT(Probe(run.steps.back(), "fold").z(), -0.05);
-}
-
-TEST(PathFollowing, AccelerationNeedsTenTimesFewerSteps) {
-  // The paper's Table 3: 45 steps with acceleration, 1994 without (R's Δλ₀ is
-  // 0.009 with and 0.0009 without).
-  Scene with = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
-  Scene without = with;
-  without.solver.acceleration = false;
-  without.solver.max_steps = 100000;
-  without.stages[1].initial_increment = 0.0009;
-  Steps fast = Solve(with);
-  Steps slow = Solve(without);
-  PrintStages("with acceleration", fast.summary);
-  PrintStages("without acceleration", slow.summary);
-  ASSERT_TRUE(fast.summary.IsComplete());
-  ASSERT_TRUE(slow.summary.IsComplete());
-  EXPECT_GE(slow.summary.steps, 10 * fast.summary.steps);
-  // Both end in the same state (docs/validation.md §5, the no-table
-  // column): every node's position and director, not only the gripped end
-  // the stages carry to the same place by construction. Measured: 1.02e-10 m
-  // and 4.3e-9 (each run converged to the scene's tolerance, 1e-6); held to
-  // about three times that.
-  const ShellState &a = fast.steps.back().state, &b = slow.steps.back().state;
-  ASSERT_EQ(a.NodeCount(), b.NodeCount());
-  double position = 0, director = 0;
-  for (int i = 0; i < a.NodeCount(); ++i) {
-    position = std::max(position, (a.positions.row(i) - b.positions.row(i)).norm());
-    director = std::max(director, (a.Director(i) - b.Director(i)).norm());
-  }
-  const Eigen::Vector3d p = Probe(fast.steps.back(), "fold"), q = Probe(slow.steps.back(), "fold");
-  std::printf(
-      "  end states: largest node distance %.3g m, director difference %.3g; fold probe "
-      "with (%.5f, %.5f, %.5f), without (%.5f, %.5f, %.5f) m\n",
-      position,
-      director,
-      p.x(),
-      p.y(),
-      p.z(),
-      q.x(),
-      q.y(),
-      q.z());
-  EXPECT_LT(position, 3e-10);
-  EXPECT_LT(director, 1.3e-8);
 }
 
 TEST(PathFollowing, GripperTurnedTwoFullTurnsReturnsTheStripToItsStart) {
@@ -144,7 +70,7 @@ TEST(PathFollowing, GripperTurnedTwoFullTurnsReturnsTheStripToItsStart) {
   turn.initial_increment = 0.01;
   turn.moves.push_back({"root", ArcPath{{0, 0, 0}, {0, 1, 0}, 720.0}, {}});
   scene.stages.push_back(turn);
-  Steps run = Solve(scene);
+  test::Outcome run = test::SolveRecorded(scene);
   ASSERT_TRUE(run.summary.IsComplete()) << run.summary.FullReport();
   const StepState* after_gravity = nullptr;
   for (const auto& s : run.steps)
@@ -195,60 +121,6 @@ TEST(PathFollowing, OnAStablePathTheLoadFactorNeverFalls) {
   EXPECT_GT(stable_pairs, 30);
 }
 
-// A branch that bends back: on this wavy sheet hung from four pins the
-// switch at λ = 0.9337 lands on a stable state a little behind the
-// bifurcation, and forward from there leads back to it. Once sent forward
-// on every definite tangent, the run went round between the two states
-// until max_steps; now a second landing on the same state lets the path go
-// the way the switch pointed, and the run ends (here where the part would
-// snap) in tens of steps.
-TEST(PathFollowing, ABranchThatBendsBackIsNotGoneRoundForever) {
-  Scene scene = ReadScene(test::SourceDir() / "tests" / "data" / "block-pins-seed19.json");
-  scene.solver.max_steps = 400;
-  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
-  std::map<long, int> landings;  // switches per landing λ (to 1e-6)
-  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
-    if (s.stability_event && s.stability_event->branch == Branch::kStable)
-      ++landings[std::lround(s.lambda * 1e6)];
-    return StepDecision::kContinue;
-  }});
-  EXPECT_NE(summary.termination, Termination::kMaxStepsReached) << summary.message;
-  EXPECT_LT(summary.steps, 200) << summary.message;
-  for (const auto& [lambda, count] : landings) EXPECT_LE(count, 2) << "λ = " << lambda * 1e-6;
-  std::printf("%d steps, %zu landing points: %s\n",
-              summary.steps,
-              landings.size(),
-              summary.message.c_str());
-}
-
-// A path that reaches λ = 1 only through a reversed load (seed 2 of the
-// same sheet: down to λ = −0.93, then up again) ends on an equilibrium, but
-// a real part jumps there: the run says so in its warnings. A path that
-// never goes below λ = 0 (the diagonal fold, above) has no such warning.
-TEST(PathFollowing, APathThroughAReversedLoadSaysSo) {
-  auto warns = [](const SolveSummary& summary) {
-    for (const auto& w : summary.warnings)
-      if (w.find("only after its path ran back to λ = ") != std::string::npos) return true;
-    return false;
-  };
-  Scene scene = ReadScene(test::SourceDir() / "tests" / "data" / "block-pins-seed2.json");
-  double lowest = 0;
-  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
-  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
-    lowest = std::min(lowest, s.lambda);
-    return StepDecision::kContinue;
-  }});
-  ASSERT_TRUE(summary.IsComplete()) << summary.message;
-  EXPECT_LT(lowest, -0.5);
-  EXPECT_TRUE(warns(summary));
-  Scene fold = ReadScene(test::ScenesDir() / "diagonal-fold.json");
-  fold.solver = WithPreset(fold.solver, SolverPreset::kDraft);
-  ShellSolver folding(fold, SolverOptions::FromScene(fold.solver));
-  const SolveSummary folded = folding.Solve({});
-  ASSERT_TRUE(folded.IsComplete()) << folded.message;
-  EXPECT_FALSE(warns(folded));
-}
-
 TEST(PathFollowing, ANodeAskedToBeInTwoPlacesIsRejected) {
   Scene scene = ReadScene(test::ScenesDir() / "strip-fold-no-table.json");
   // The far-end support also takes the gripped left edge: the gripper would
@@ -272,7 +144,7 @@ TEST(PathFollowing, ReleasingTheLastHoldStopsWithAClearMessage) {
   drop.release = {"end"};
   scene.stages.resize(1);  // SW only, then let go
   scene.stages.push_back(drop);
-  Steps run = Solve(scene);
+  test::Outcome run = test::SolveRecorded(scene);
   EXPECT_EQ(run.summary.termination, Termination::kIllPosed);
   EXPECT_NE(run.summary.message.find("nothing holds the fabric"), std::string::npos)
       << run.summary.message;
@@ -305,9 +177,8 @@ TEST(PathFollowing, ClampedGripperArcsImposeTheirRotationExactly) {
     turn.initial_increment = 0.02;
     turn.moves.push_back({"root", ArcPath{{0, 0, 0}, {0, 1, 0}, degrees}, {}});
     scene.stages.push_back(turn);
-    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                      ("clamped-arc-" + std::to_string(int(degrees)));
-    std::filesystem::remove_all(dir);
+    const test::TempDir folder("clamped-arc-" + std::to_string(int(degrees)));
+    const std::filesystem::path& dir = folder.path();
     ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
     std::vector<StepState> steps;
     ResultWriter writer(dir, scene, solver.model());

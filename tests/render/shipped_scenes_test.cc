@@ -25,6 +25,7 @@
 #include "core/io/state_file.h"
 #include "support/drape_command.h"
 #include "support/finite_outputs.h"
+#include "support/temp_dir.h"
 #include "support/test_paths.h"
 
 namespace drape {
@@ -87,8 +88,9 @@ class ShippedScene : public ::testing::TestWithParam<fs::path> {};
 
 TEST_P(ShippedScene, EndsStableOrSaysWhyAndWritesOnlyFiniteNumbers) {
   const fs::path scene = GetParam();
-  const fs::path dir = fs::path(::testing::TempDir()) / ("shipped-" + scene.stem().string());
-  fs::remove_all(dir);
+  // Per process: two checkouts' tests may run at once.
+  const test::TempDir folder("shipped-" + scene.stem().string());
+  const fs::path& dir = folder.path();
   const test::CommandResult run =
       test::RunDrape("run '" + scene.string() + "' -o '" + dir.string() + "' --quiet");
   ASSERT_TRUE(fs::exists(dir / "result.json")) << run.output;

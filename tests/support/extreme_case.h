@@ -1,4 +1,4 @@
-// The extremes matrix's cases (tests/extremes/extremes_test.cc): what a
+// The extremes matrix's cases (tests/extremes/extreme_cases.cc): what a
 // case is and how it must end, the independent answers its property checks
 // compare with (the heavy elastica ODE, force balance), and the scenes the
 // cases are built from.
@@ -51,7 +51,15 @@ struct ExtremeCase {
   std::function<void(const Scene&, const CaseRun&)> check;
   std::vector<std::string> message_names;
   double time_limit_s = 60;
+  // Tens of seconds here, minutes under the sanitizers: run by
+  // extremes_slow_test.cc, in the slow tier (tests/CMakeLists.txt).
+  bool slow = false;
 };
+
+inline ExtremeCase Slow(ExtremeCase c) {
+  c.slow = true;
+  return c;
+}
 
 using SceneMaker = std::function<Scene(const std::filesystem::path& dir)>;
 using Property = std::function<void(const Scene&, const CaseRun&)>;
@@ -227,5 +235,15 @@ inline void WriteKawabata(const std::filesystem::path& file,
   for (int i = 1; i <= n; ++i) row(-k_max * i / n);
   for (int i = n - 1; i >= 0; --i) row(-k_max * i / n);
 }
+
+// The whole matrix (extreme_cases.cc), the slow cases or the rest.
+std::vector<ExtremeCase> ExtremeCases(bool slow);
+
+// Runs a case through `drape run` and checks how it ended, its property and
+// that every number it wrote is finite.
+void RunExtremeCase(const ExtremeCase& c);
+
+// A case's name as a test name: letters and digits, the rest '_'.
+std::string TestName(const ::testing::TestParamInfo<ExtremeCase>& info);
 
 }  // namespace drape::test
