@@ -8,7 +8,9 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/continuation/equilibrium_system.h"
