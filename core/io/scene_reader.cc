@@ -894,10 +894,14 @@ class DuplicateKeyCheck {
     std::string p;
     for (size_t i = 0; i + 1 < frames_.size(); ++i) {
       const Frame& f = frames_[i];
-      if (f.array)
-        p += "[" + std::to_string(f.next_index - 1) + "]";
-      else
+      if (f.array) {
+        // Appended: GCC 12 -O3 warns falsely (-Wrestrict) on "[" + std::to_string(…).
+        p += '[';
+        p += std::to_string(f.next_index - 1);
+        p += ']';
+      } else {
         p += (p.empty() ? "" : ".") + f.key;
+      }
     }
     return p;
   }
