@@ -8,9 +8,9 @@
 #include <set>
 #include <sstream>
 
-#include "core/io/json_cursor.h"
 #include "core/io/kawabata_reader.h"
 #include "core/io/material_library.h"
+#include "core/io/scene_parser.h"
 #include "core/model/scene_error.h"
 #include "core/model/sequencing_check.h"
 #include "core/model/solver_preset.h"
@@ -23,46 +23,6 @@ using json = nlohmann::json;
 
 constexpr double kStandardGravity = 9.80665;  // m/s², for areal_density
 
-// Reads one scene document. Each Read* function takes the cursor of its JSON
-// value and returns plain data; cross-references are checked at the end.
-class SceneParser {
- public:
-  explicit SceneParser(fs::path base) : base_(std::move(base)) {}
-
-  Scene Read(const JsonCursor& root);
-
- private:
-  Fabric ReadFabric(const JsonCursor& c);
-  Outline ReadOutline(const JsonCursor& c);
-  MeshSpec ReadMeshSpec(const JsonCursor& c, const Outline& outline);
-  ImperfectionSpec ReadImperfection(const JsonCursor& c);
-  Material ReadMaterialOrLibrary(const JsonCursor& c);
-  Material ReadMaterial(const JsonCursor& c);
-  Bending ReadBending(const JsonCursor& c);
-  BendingLaw ReadBendingLaw(const JsonCursor& c);
-  // A curve's points from a Kawabata file (relative to the scene's folder).
-  void ReadKawabataPoints(const JsonCursor& c, CurveBending& law);
-  Selection ReadSelection(const JsonCursor& c);
-  Support ReadSupport(const JsonCursor& c);
-  Gripper ReadGripper(const JsonCursor& c);
-  PointLoad ReadLoad(const JsonCursor& c);
-  Obstacle ReadObstacle(const JsonCursor& c);
-  Contact ReadContact(const JsonCursor& c);
-  Stage ReadStage(const JsonCursor& c);
-  Path ReadPath(const JsonCursor& c);
-  SolverSettings ReadSolver(const JsonCursor& c);
-  Probe ReadProbe(const JsonCursor& c);
-
-  std::string ReadName(const JsonCursor& c, const std::string& group);
-  std::string ReadFileReference(const JsonCursor& c);
-  double ReadAngleDeg(const JsonCursor& c);
-  void CheckStages(const JsonCursor& root, const Scene& scene);
-
-  // Names already taken, per namespace, with the path that took them.
-  std::map<std::string, std::map<std::string, std::string>> names_;
-  fs::path base_;
-};
-
 template <typename T, typename F>
 std::vector<T> ReadList(const std::optional<JsonCursor>& c, F read) {
   std::vector<T> out;
@@ -70,6 +30,8 @@ std::vector<T> ReadList(const std::optional<JsonCursor>& c, F read) {
   for (const auto& item : c->Items()) out.push_back(read(item));
   return out;
 }
+
+}  // namespace
 
 std::string SceneParser::ReadName(const JsonCursor& c, const std::string& group) {
   auto name_cursor = c["name"];
@@ -846,6 +808,8 @@ Probe SceneParser::ReadProbe(const JsonCursor& c) {
   p.at = c["at"].QuantityVec2(dim::kLength);
   return p;
 }
+
+namespace {
 
 // Tracks the path of the value being parsed so a repeated key can be named:
 // nlohmann/json would silently keep the last of two equal keys.
