@@ -1,20 +1,16 @@
 // Kawabata reader: text rows → (K, M) points in SI → monotone runs of
-// curvature → loading/unloading branches per sign → one curve.
+// curvature → loading/unloading branches per sign → one curve. The rows and
+// points are read here; the runs, branches and curve are kawabata_curve.cc's.
 #include "core/io/kawabata_reader.h"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
-#include <limits>
-#include <optional>
-#include <span>
-#include <utility>
 
-#include "core/model/units.h"
+#include "core/io/kawabata_parser.h"
 
 namespace drape {
 
@@ -28,46 +24,21 @@ KawabataError::KawabataError(std::string source, int line, std::string message)
 namespace {
 
 namespace fs = std::filesystem;
+using kawabata::KawabataParser;
+
+}  // namespace
+
+namespace kawabata {
+namespace {
 
 // KES-FB2's own units, for a column whose header gives none (or without a header).
 constexpr std::string_view kKesCurvatureUnit = "1/cm";
 constexpr std::string_view kKesMomentUnit = "gf*cm/cm";
-constexpr std::size_t kMinBranchPoints = 4;
 // Finite values near the largest double overflowed the sums and differences
 // of averaging and interpolation to infinity. Bending data in SI are nowhere
 // near; below this, every product of two differences stays finite.
 constexpr double kMaxMagnitude = 1e100;
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
-
-struct Line {
-  int number = 0;  // 1-based, counting blank and comment lines
-  std::string_view text;
-};
-
-struct Column {
-  std::string name;   // from the header without the unit; empty without a header
-  std::string unit;   // as written in parentheses; empty = KES's own
-  std::string label;  // for messages: "column 'moment'" or "column 2"
-};
-
-struct Point {
-  double k = 0.0;  // curvature [1/m]
-  double m = 0.0;  // moment per width [N·m/m]
-  int line = 0;    // the row it comes from (the next row for an interpolated point)
-};
-
-// Points whose curvature moves one way only (strictly).
-using Run = std::vector<Point>;
-
-// Loading and unloading runs of one sign of curvature, in file order.
-struct SignBranches {
-  std::optional<Run> loading;
-  std::optional<Run> unloading;
-};
-
-int Sign(double x) {
-  return (x > 0) - (x < 0);
-}
 
 std::string Enclosed(std::string_view text) {
   std::string result = "'";
@@ -156,159 +127,7 @@ std::optional<double> Number(std::string_view cell, bool decimal_comma) {
   return value;
 }
 
-// Moment at `k` on a run of increasing curvature that covers k, linear between samples.
-double MomentAt(const Run& run, double k) {
-  const auto above = std::ranges::lower_bound(run, k, {}, &Point::k);
-  if (above->k == k) return above->m;
-  const Point& a = *std::prev(above);
-  const Point& b = *above;
-  return a.m + (b.m - a.m) * (k - a.k) / (b.k - a.k);
-}
-
-// Loading and unloading (both in increasing K) averaged at the union of their
-// curvatures within their common range, so no sample of either is lost there.
-// Empty when the ranges do not overlap.
-Run Average(const Run& a, const Run& b) {
-  const double low = std::max(a.front().k, b.front().k);
-  const double high = std::min(a.back().k, b.back().k);
-  if (!(low < high)) return {};
-  std::vector<double> ks;
-  for (const Run* run : {&a, &b}) {
-    for (const Point& p : *run) {
-      if (p.k >= low && p.k <= high) ks.push_back(p.k);
-    }
-  }
-  std::ranges::sort(ks);
-  // Curvatures equal but for rounding (0.3 vs 0.1 * 3) are one sample.
-  const double tolerance = 1e-12 * std::max(std::abs(low), std::abs(high));
-  Run mean;
-  for (const double k : ks) {
-    if (!mean.empty() && k - mean.back().k <= tolerance) continue;
-    mean.push_back({k, 0.5 * (MomentAt(a, k) + MomentAt(b, k)), 0});
-  }
-  return mean;
-}
-
-// Splits the points where the curvature turns back. A turning point is shared
-// by the runs on both sides. A repeated curvature (the vertical step of a
-// hysteresis loop at ±Kmax, where the moment drops from loading to unloading)
-// ends a run without being shared, so both moments there are kept.
-std::vector<Run> SplitRuns(const std::vector<Point>& points) {
-  std::vector<Run> runs;
-  Run run = {points.front()};
-  int direction = 0;
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const int step = Sign(points[i].k - points[i - 1].k);
-    if (step == 0) {
-      runs.push_back(std::move(run));
-      run = {points[i]};
-      direction = 0;
-      continue;
-    }
-    if (direction != 0 && step != direction) {
-      runs.push_back(std::move(run));
-      run = {points[i - 1]};
-    }
-    direction = step;
-    run.push_back(points[i]);
-  }
-  runs.push_back(std::move(run));
-  return runs;
-}
-
-// Splits a run where it crosses K = 0 so that each piece has one sign; a
-// crossing between two samples gets an interpolated point at K = 0 on both
-// sides. Pieces of a single point are dropped.
-std::vector<Run> SplitAtZero(const Run& run) {
-  std::vector<Run> pieces(1);
-  int sign = 0;  // of the current piece, 0 until it leaves K = 0
-  for (const Point& p : run) {
-    if (Sign(p.k) != 0 && sign != 0 && Sign(p.k) != sign) {
-      Point zero = pieces.back().back();
-      if (zero.k != 0.0) {
-        zero = {0.0, zero.m + (p.m - zero.m) * (0.0 - zero.k) / (p.k - zero.k), p.line};
-        pieces.back().push_back(zero);
-      }
-      pieces.push_back({zero});
-    }
-    if (Sign(p.k) != 0) sign = Sign(p.k);
-    pieces.back().push_back(p);
-  }
-  std::erase_if(pieces, [](const Run& piece) { return piece.size() < 2; });
-  return pieces;
-}
-
-// The negative side (ending at K <= 0) followed by the positive one (starting
-// at K >= 0); when both reach K = 0 they share one point midway between their
-// moments there.
-Run Joined(Run negative, const Run& positive) {
-  auto begin = positive.begin();
-  if (!negative.empty() && begin != positive.end() && negative.back().k == 0.0 && begin->k == 0.0) {
-    negative.back().m = 0.5 * (negative.back().m + begin->m);
-    ++begin;
-  }
-  negative.insert(negative.end(), begin, positive.end());
-  return negative;
-}
-
-std::string LineRange(const Run& run) {
-  int first = std::numeric_limits<int>::max();
-  int last = 0;
-  for (const Point& p : run) {
-    if (p.line == 0) continue;
-    first = std::min(first, p.line);
-    last = std::max(last, p.line);
-  }
-  return "lines " + std::to_string(first) + "-" + std::to_string(last);
-}
-
-class KawabataParser {
- public:
-  KawabataParser(const std::string& source, const KawabataOptions& options)
-      : source_(source), options_(options) {}
-
-  KawabataCurve Parse(std::string_view text);
-
- private:
-  [[noreturn]] void Fail(int line, const std::string& message) const {
-    throw KawabataError(source_, line, message);
-  }
-  bool DecimalComma() const { return delimiter_ != ','; }
-
-  std::vector<Column> ReadColumns(const Line& first);
-  std::pair<std::size_t, std::size_t> ChooseColumns(const std::vector<Column>& columns,
-                                                    int line) const;
-  std::size_t FindColumn(const std::vector<Column>& columns,
-                         const std::string& wanted,
-                         std::string_view word,
-                         char letter,
-                         std::size_t exclude,
-                         int line) const;
-  double UnitFactor(const Column& column,
-                    int line,
-                    Dimension expected,
-                    std::string_view kes_unit,
-                    std::string_view expected_text) const;
-  std::vector<Point> ReadPoints(std::span<const Line> rows,
-                                const std::vector<Column>& columns,
-                                std::size_t k_column,
-                                std::size_t m_column,
-                                double k_factor,
-                                double m_factor) const;
-  double CellValue(int line, std::string_view cell, const Column& column, double factor) const;
-  std::vector<Run> CleanRuns(std::vector<Run> runs);
-  std::array<SignBranches, 2> Classify(const std::vector<Run>& runs) const;
-  Run Checked(Run run, const std::string& what) const;
-  std::optional<Run> SignCurve(const SignBranches& branches, std::string_view side);
-  KawabataCurve Finish(const Run& curve);
-
-  const std::string& source_;
-  const KawabataOptions& options_;
-  char delimiter_ = ',';
-  bool has_header_ = false;
-  std::vector<std::string> warnings_;
-  std::string curvature_read_, moment_read_;
-};
+}  // namespace
 
 KawabataCurve KawabataParser::Parse(std::string_view text) {
   const std::vector<Line> lines = ContentLines(text);
@@ -511,128 +330,7 @@ double KawabataParser::CellValue(int line,
   return si;
 }
 
-// Drops single points (the middle of a vertical step), joins runs that a
-// repeated curvature split although they go the same way, and refuses zig-zag
-// noise: one step back between two runs is neither loading nor unloading.
-// A one-step run at either end of the data is dropped with a warning.
-std::vector<Run> KawabataParser::CleanRuns(std::vector<Run> runs) {
-  const auto direction = [](const Run& run) { return Sign(run.back().k - run.front().k); };
-  std::vector<Run> kept;
-  for (Run& run : runs) {
-    if (run.size() < 2) continue;
-    if (!kept.empty() && direction(kept.back()) == direction(run)) {
-      warnings_.push_back("line " + std::to_string(run.front().line) +
-                          " repeats the curvature of line " +
-                          std::to_string(kept.back().back().line) + "; the first was kept");
-      kept.back().insert(kept.back().end(), run.begin() + 1, run.end());
-      continue;
-    }
-    kept.push_back(std::move(run));
-  }
-  for (std::size_t i = 1; i + 1 < kept.size(); ++i) {
-    if (kept[i].size() == 2) {
-      Fail(kept[i][1].line,
-           "the curvature turns back for a single step (zig-zag); loading and unloading "
-           "branches cannot be told apart");
-    }
-  }
-  for (const bool last : {true, false}) {
-    if (kept.size() < 2) break;
-    const Run& end = last ? kept.back() : kept.front();
-    if (end.size() != 2) continue;
-    warnings_.push_back("a single step of curvature at " + LineRange(end) + " was left out");
-    kept.erase(last ? kept.end() - 1 : kept.begin());
-  }
-  return kept;
-}
-
-// Pieces of the runs by sign ([0]: K < 0, [1]: K > 0) and branch: loading
-// while |K| rises. A second piece of the same kind means the curvature went
-// back and forth more than one KES cycle does.
-std::array<SignBranches, 2> KawabataParser::Classify(const std::vector<Run>& runs) const {
-  std::array<SignBranches, 2> branches;
-  for (const Run& run : runs) {
-    for (Run& piece : SplitAtZero(run)) {
-      const bool loading = std::abs(piece.back().k) > std::abs(piece.front().k);
-      const bool positive = piece.front().k + piece.back().k > 0;
-      std::optional<Run>& slot =
-          loading ? branches[positive].loading : branches[positive].unloading;
-      if (slot) {
-        Fail(piece.front().line,
-             std::string("a second ") + (loading ? "loading" : "unloading") + " run for " +
-                 (positive ? "K > 0" : "K < 0") + " starts here (the first is at " +
-                 LineRange(*slot) + "); the curvature must go through one KES cycle");
-      }
-      slot = std::move(piece);
-    }
-  }
-  return branches;
-}
-
-// `run` in increasing curvature, once it is known to have enough points.
-Run KawabataParser::Checked(Run run, const std::string& what) const {
-  if (run.size() < kMinBranchPoints) {
-    Fail(run.front().line,
-         what + " (" + LineRange(run) + ") has only " + std::to_string(run.size()) +
-             " points; at least " + std::to_string(kMinBranchPoints) + " are needed");
-  }
-  if (run.front().k > run.back().k) std::ranges::reverse(run);
-  return run;
-}
-
-// The curve for one sign of curvature: the chosen branch or the average of
-// both; whichever was found when the other is missing.
-std::optional<Run> KawabataParser::SignCurve(const SignBranches& branches, std::string_view side) {
-  const std::string on = " for " + std::string(side);
-  const auto& loading = branches.loading;
-  const auto& unloading = branches.unloading;
-  if (!loading && !unloading) return std::nullopt;
-  if (options_.branch == KawabataBranch::kLoading && loading) {
-    return Checked(*loading, "the loading branch" + on);
-  }
-  if (options_.branch == KawabataBranch::kUnloading && unloading) {
-    return Checked(*unloading, "the unloading branch" + on);
-  }
-  if (options_.branch == KawabataBranch::kAverage && loading && unloading) {
-    const Run l = Checked(*loading, "the loading branch" + on);
-    const Run u = Checked(*unloading, "the unloading branch" + on);
-    Run mean = Average(l, u);
-    if (mean.empty()) {
-      Fail(loading->front().line,
-           "the loading and unloading branches" + on + " do not overlap in curvature");
-    }
-    if (mean.front().k != std::min(l.front().k, u.front().k) ||
-        mean.back().k != std::max(l.back().k, u.back().k)) {
-      warnings_.push_back("loading and unloading" + on +
-                          " cover different curvatures; averaged where both exist");
-    }
-    return mean;
-  }
-  const bool has_loading = loading.has_value();
-  warnings_.push_back(std::string("only one branch found") + on + " (" +
-                      (has_loading ? "loading" : "unloading") + "); used as is");
-  return Checked(has_loading ? *loading : *unloading,
-                 std::string("the ") + (has_loading ? "loading" : "unloading") + " branch" + on);
-}
-
-KawabataCurve KawabataParser::Finish(const Run& curve) {
-  if (curve.front().k >= 0.0) {
-    warnings_.push_back("the data cover K >= 0 only; the curve is extended by symmetry");
-  } else if (curve.back().k <= 0.0) {
-    warnings_.push_back("the data cover K <= 0 only; the curve is extended by symmetry");
-  }
-  KawabataCurve result;
-  for (const Point& p : curve) {
-    result.curvature.push_back(p.k);
-    result.moment.push_back(p.m);
-  }
-  result.warnings = std::move(warnings_);
-  result.curvature_read = curvature_read_;
-  result.moment_read = moment_read_;
-  return result;
-}
-
-}  // namespace
+}  // namespace kawabata
 
 KawabataCurve ParseKawabata(std::string_view text,
                             const std::string& source_name,

@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "ui/render/colour_map.h"
 #include "ui/render/field_units.h"
 #include "ui/render/ghost_surface.h"
 #include "ui/render/scene_actors.h"
@@ -48,36 +49,6 @@ using Ptr = vtkSmartPointer<T>;
 constexpr double kFront[3] = {0.93, 0.62, 0.33};
 constexpr double kBack[3] = {0.47, 0.36, 0.62};
 constexpr double kBackground[3] = {0.96, 0.97, 0.98};
-
-// Viridis at nine evenly spaced points (matplotlib's data, CC0), in 0–255.
-constexpr unsigned char kViridis[9][3] = {{68, 1, 84},
-                                          {71, 44, 122},
-                                          {59, 81, 139},
-                                          {44, 113, 142},
-                                          {33, 144, 141},
-                                          {39, 173, 129},
-                                          {92, 200, 99},
-                                          {170, 220, 50},
-                                          {253, 231, 37}};
-
-void FillColourMap(ColourMap map, vtkLookupTable* table) {
-  constexpr int kEntries = 256;
-  table->SetNumberOfTableValues(kEntries);
-  if (map == ColourMap::kRainbow) {
-    table->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
-    table->ForceBuild();
-    return;
-  }
-  for (int i = 0; i < kEntries; ++i) {
-    const double t = 8.0 * i / (kEntries - 1);
-    const int k = std::min(7, static_cast<int>(t));
-    const double f = t - k;
-    double rgb[3];
-    for (int c = 0; c < 3; ++c)
-      rgb[c] = ((1 - f) * kViridis[k][c] + f * kViridis[k + 1][c]) / 255.0;
-    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
-  }
-}
 constexpr double kObstacle[3] = {0.62, 0.66, 0.70};
 constexpr double kSupport[3] = {0.25, 0.25, 0.28};
 constexpr double kGripper[3] = {0.85, 0.15, 0.15};
@@ -140,16 +111,6 @@ Eigen::Vector3d ViewDirection(const std::string& view, Eigen::Vector3d* up) {
 }
 
 }  // namespace
-
-const char* ToString(ColourMap map) {
-  return map == ColourMap::kRainbow ? "rainbow" : "viridis";
-}
-
-std::optional<ColourMap> ColourMapNamed(std::string_view name) {
-  for (ColourMap m : {ColourMap::kViridis, ColourMap::kRainbow})
-    if (name == ToString(m)) return m;
-  return std::nullopt;
-}
 
 struct FrameRenderer::Impl {
   const Scene& scene;
@@ -569,53 +530,6 @@ bool FrameRenderer::HasGhost() const {
 
 vtkRenderer* FrameRenderer::renderer() {
   return impl_->renderer;
-}
-
-Eigen::AlignedBox3d RunBounds(const Scene& scene, const std::vector<const ShellState*>& states) {
-  Eigen::AlignedBox3d box;
-  for (const ShellState* s : states)
-    for (int i = 0; i < s->positions.rows(); ++i)
-      box.extend(s->positions.row(i).transpose().eval());
-  // Finite obstacles the part rests on belong in the picture.
-  for (const auto& o : scene.obstacles) {
-    if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
-      box.extend(Eigen::Vector3d(b->min[0], b->min[1], b->min[2]));
-      box.extend(Eigen::Vector3d(b->max[0], b->max[1], b->max[2]));
-    } else if (const auto* s = std::get_if<SphereShape>(&o.shape)) {
-      const Eigen::Vector3d c(s->center[0], s->center[1], s->center[2]);
-      box.extend((c.array() - s->radius).matrix());
-      box.extend((c.array() + s->radius).matrix());
-    }
-  }
-  if (box.isEmpty()) box.extend(Eigen::Vector3d::Zero());
-  return box;
-}
-
-std::vector<Eigen::Vector3d> GripperPathPoints(const Scene& scene, const ShellModel& model) {
-  std::vector<Eigen::Vector3d> points;
-  for (const auto& line : GripperPaths(scene, model))
-    points.insert(points.end(), line.begin(), line.end());
-  return points;
-}
-
-std::array<double, 2> FieldRange(FieldKind kind,
-                                 const ShellModel& model,
-                                 const std::vector<const ShellState*>& states,
-                                 const std::vector<double>& contact_pressure) {
-  std::array<double, 2> range{INFINITY, -INFINITY};
-  auto take = [&](const Eigen::VectorXd& v) {
-    if (!v.size()) return;
-    range[0] = std::min(range[0], v.minCoeff());
-    range[1] = std::max(range[1], v.maxCoeff());
-  };
-  if (kind == FieldKind::kContactPressure) {
-    take(Eigen::Map<const Eigen::VectorXd>(contact_pressure.data(),
-                                           static_cast<Eigen::Index>(contact_pressure.size())));
-  } else {
-    for (const ShellState* s : states) take(EvaluateField(kind, model, *s));
-  }
-  if (!(range[0] <= range[1])) range = {0.0, 1.0};
-  return range;
 }
 
 }  // namespace drape

@@ -108,6 +108,76 @@ std::string Number(double v) {
   return text;
 }
 
+// The steps' and the forces' extent over every series; throws
+// std::invalid_argument naming the series and the step when a value is not
+// finite, a force is negative, or a series' steps and forces differ in length.
+struct Extent {
+  double x_lo = 1e300, x_hi = -1e300, y_hi = 0;
+};
+
+Extent CheckedExtent(const std::vector<ReactionSeries>& series) {
+  Extent e;
+  for (const ReactionSeries& s : series) {
+    if (s.steps.size() != s.forces.size())
+      throw std::invalid_argument("reactions of '" + s.name +
+                                  "': " + std::to_string(s.steps.size()) + " steps but " +
+                                  std::to_string(s.forces.size()) + " forces");
+    for (size_t i = 0; i < s.steps.size(); ++i) {
+      if (!std::isfinite(s.steps[i]))
+        throw std::invalid_argument("reactions of '" + s.name + "': step " + Number(s.steps[i]) +
+                                    " is not a finite number");
+      if (!std::isfinite(s.forces[i]) || s.forces[i] < 0)
+        throw std::invalid_argument("reaction of '" + s.name + "' at step " + Number(s.steps[i]) +
+                                    ": |F| = " + Number(s.forces[i]) +
+                                    " N is not a finite magnitude; nothing drawn");
+      e.x_lo = std::min(e.x_lo, s.steps[i]);
+      e.x_hi = std::max(e.x_hi, s.steps[i]);
+      e.y_hi = std::max(e.y_hi, s.forces[i]);
+    }
+  }
+  return e;
+}
+
+// One line per series in its colour, forces shown in units of `per_unit` N.
+void AddSeriesLines(vtkChartXY* chart, const std::vector<ReactionSeries>& series, double per_unit) {
+  for (size_t k = 0; k < series.size(); ++k) {
+    const ReactionSeries& s = series[k];
+    if (s.steps.empty()) continue;
+    auto line = vtkSmartPointer<vtkPlotLine>::New();
+    std::vector<double> shown(s.forces.size());
+    std::transform(
+        s.forces.begin(), s.forces.end(), shown.begin(), [&](double f) { return f / per_unit; });
+    line->SetInputData(TableOf(s.steps, shown), 0, 1);
+    const auto c = ReactionColour(k);
+    line->SetColor(static_cast<unsigned char>(c[0]),
+                   static_cast<unsigned char>(c[1]),
+                   static_cast<unsigned char>(c[2]),
+                   255);
+    line->SetWidth(2.5);
+    line->SetLabel(s.name);
+    // Few steps: each one marked (one step is only a marker).
+    if (s.steps.size() <= 40) {
+      line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+      line->SetMarkerSize(6);
+    }
+    chart->AddPlot(line);
+  }
+}
+
+// Where the rendered chart's axes put the plot area, and their ranges.
+ChartArea AreaOf(vtkAxis* x, vtkAxis* y) {
+  ChartArea area;
+  area.left = static_cast<int>(std::lround(x->GetPoint1()[0]));
+  area.right = static_cast<int>(std::lround(x->GetPoint2()[0]));
+  area.bottom = static_cast<int>(std::lround(y->GetPoint1()[1]));
+  area.top = static_cast<int>(std::lround(y->GetPoint2()[1]));
+  area.step_lo = x->GetMinimum();
+  area.step_hi = x->GetMaximum();
+  area.force_lo = y->GetMinimum();
+  area.force_hi = y->GetMaximum();
+  return area;
+}
+
 }  // namespace
 
 std::array<int, 3> ReactionColour(size_t i) {
@@ -127,25 +197,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
                              const std::filesystem::path& png) {
   if (options.width < 16 || options.height < 16)
     throw std::invalid_argument("the chart needs at least 16 x 16 pixels");
-  double x_lo = 1e300, x_hi = -1e300, y_hi = 0;
-  for (const ReactionSeries& s : series) {
-    if (s.steps.size() != s.forces.size())
-      throw std::invalid_argument("reactions of '" + s.name +
-                                  "': " + std::to_string(s.steps.size()) + " steps but " +
-                                  std::to_string(s.forces.size()) + " forces");
-    for (size_t i = 0; i < s.steps.size(); ++i) {
-      if (!std::isfinite(s.steps[i]))
-        throw std::invalid_argument("reactions of '" + s.name + "': step " + Number(s.steps[i]) +
-                                    " is not a finite number");
-      if (!std::isfinite(s.forces[i]) || s.forces[i] < 0)
-        throw std::invalid_argument("reaction of '" + s.name + "' at step " + Number(s.steps[i]) +
-                                    ": |F| = " + Number(s.forces[i]) +
-                                    " N is not a finite magnitude; nothing drawn");
-      x_lo = std::min(x_lo, s.steps[i]);
-      x_hi = std::max(x_hi, s.steps[i]);
-      y_hi = std::max(y_hi, s.forces[i]);
-    }
-  }
+  const auto [x_lo, x_hi, y_hi] = CheckedExtent(series);
   std::error_code ec;
   const std::filesystem::path folder = png.parent_path();
   if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
@@ -171,28 +223,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
     marks->SetLegendVisibility(false);
     chart->AddPlot(marks);
   }
-  for (size_t k = 0; k < series.size(); ++k) {
-    const ReactionSeries& s = series[k];
-    if (s.steps.empty()) continue;
-    auto line = vtkSmartPointer<vtkPlotLine>::New();
-    std::vector<double> shown(s.forces.size());
-    std::transform(
-        s.forces.begin(), s.forces.end(), shown.begin(), [&](double f) { return f / per_unit; });
-    line->SetInputData(TableOf(s.steps, shown), 0, 1);
-    const auto c = ReactionColour(k);
-    line->SetColor(static_cast<unsigned char>(c[0]),
-                   static_cast<unsigned char>(c[1]),
-                   static_cast<unsigned char>(c[2]),
-                   255);
-    line->SetWidth(2.5);
-    line->SetLabel(s.name);
-    // Few steps: each one marked (one step is only a marker).
-    if (s.steps.size() <= 40) {
-      line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
-      line->SetMarkerSize(6);
-    }
-    chart->AddPlot(line);
-  }
+  AddSeriesLines(chart, series, per_unit);
   chart->SetShowLegend(true);
   chart->GetLegend()->SetInline(false);
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
@@ -213,15 +244,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
   }
 
   drawing.Render();
-  ChartArea area;
-  area.left = static_cast<int>(std::lround(x->GetPoint1()[0]));
-  area.right = static_cast<int>(std::lround(x->GetPoint2()[0]));
-  area.bottom = static_cast<int>(std::lround(y->GetPoint1()[1]));
-  area.top = static_cast<int>(std::lround(y->GetPoint2()[1]));
-  area.step_lo = x->GetMinimum();
-  area.step_hi = x->GetMaximum();
-  area.force_lo = y->GetMinimum();
-  area.force_hi = y->GetMaximum();
+  ChartArea area = AreaOf(x, y);
 
   drawing.WritePng(png);
   return area;

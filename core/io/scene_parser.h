@@ -1,0 +1,56 @@
+// The scene reader's parser, shared by the files that read one part of a
+// scene each (scene_reader_*.cc): one object per document, so that names
+// taken in one part are known in the others. Private to core/io.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "core/io/json_cursor.h"
+#include "core/model/scene.h"
+
+namespace drape {
+
+// Reads one scene document. Each Read* function takes the cursor of its JSON
+// value and returns plain data; cross-references are checked at the end.
+class SceneParser {
+ public:
+  explicit SceneParser(std::filesystem::path base) : base_(std::move(base)) {}
+
+  Scene Read(const JsonCursor& root);
+
+ private:
+  Fabric ReadFabric(const JsonCursor& c);
+  Outline ReadOutline(const JsonCursor& c);
+  MeshSpec ReadMeshSpec(const JsonCursor& c, const Outline& outline);
+  ImperfectionSpec ReadImperfection(const JsonCursor& c);
+  Material ReadMaterialOrLibrary(const JsonCursor& c);
+  Material ReadMaterial(const JsonCursor& c);
+  Bending ReadBending(const JsonCursor& c);
+  BendingLaw ReadBendingLaw(const JsonCursor& c);
+  // A curve's points from a Kawabata file (relative to the scene's folder).
+  void ReadKawabataPoints(const JsonCursor& c, CurveBending& law);
+  Selection ReadSelection(const JsonCursor& c);
+  Support ReadSupport(const JsonCursor& c);
+  Gripper ReadGripper(const JsonCursor& c);
+  PointLoad ReadLoad(const JsonCursor& c);
+  Obstacle ReadObstacle(const JsonCursor& c);
+  Contact ReadContact(const JsonCursor& c);
+  Stage ReadStage(const JsonCursor& c);
+  Path ReadPath(const JsonCursor& c);
+  SolverSettings ReadSolver(const JsonCursor& c);
+  Probe ReadProbe(const JsonCursor& c);
+
+  std::string ReadName(const JsonCursor& c, const std::string& group);
+  std::string ReadFileReference(const JsonCursor& c);
+  double ReadAngleDeg(const JsonCursor& c);
+  void CheckStages(const JsonCursor& root, const Scene& scene);
+
+  // Names already taken, per namespace, with the path that took them.
+  std::map<std::string, std::map<std::string, std::string>> names_;
+  std::filesystem::path base_;
+};
+
+}  // namespace drape

@@ -1,0 +1,85 @@
+// Reading a scene's fabric: its outline, how finely it is meshed, where it
+// lies and the imperfection that lets it buckle.
+#include "core/io/scene_parser.h"
+
+namespace drape {
+
+Fabric SceneParser::ReadFabric(const JsonCursor& c) {
+  c.ExpectObject({"outline", "mesh", "elevation", "imperfection"});
+  Fabric fabric;
+  fabric.outline = ReadOutline(c["outline"]);
+  fabric.mesh = ReadMeshSpec(c["mesh"], fabric.outline);
+  if (auto e = c.Find("elevation")) fabric.elevation = e->Quantity(dim::kLength);
+  if (auto i = c.Find("imperfection")) fabric.imperfection = ReadImperfection(*i);
+  return fabric;
+}
+
+Outline SceneParser::ReadOutline(const JsonCursor& c) {
+  c.ExpectObject({"rectangle", "disk", "polygon"});
+  switch (c.OneOf({"rectangle", "disk", "polygon"})) {
+    case 0: {
+      auto r = c["rectangle"];
+      r.ExpectObject({"size", "center"});
+      RectangleOutline out;
+      auto size = r["size"].Items(2);
+      out.size = {size[0].PositiveQuantity(dim::kLength), size[1].PositiveQuantity(dim::kLength)};
+      if (auto center = r.Find("center")) out.center = center->QuantityVec2(dim::kLength);
+      return out;
+    }
+    case 1: {
+      auto d = c["disk"];
+      d.ExpectObject({"radius", "center"});
+      DiskOutline out;
+      out.radius = d["radius"].PositiveQuantity(dim::kLength);
+      if (auto center = d.Find("center")) out.center = center->QuantityVec2(dim::kLength);
+      return out;
+    }
+    default: {
+      auto p = c["polygon"];
+      PolygonOutline out;
+      for (const auto& v : p.Items()) out.vertices.push_back(v.QuantityVec2(dim::kLength));
+      if (out.vertices.size() < 3)
+        p.Fail("a polygon needs at least 3 vertices, found " + std::to_string(out.vertices.size()));
+      return out;
+    }
+  }
+}
+
+MeshSpec SceneParser::ReadMeshSpec(const JsonCursor& c, const Outline& outline) {
+  c.ExpectObject({"elements", "size"});
+  MeshSpec spec;
+  if (c.OneOf({"elements", "size"}) == 0) {
+    auto e = c["elements"];
+    if (!std::holds_alternative<RectangleOutline>(outline))
+      e.Fail("element counts are for rectangle outlines; give 'size' (a target element edge)");
+    auto items = e.Items(2);
+    std::array<int, 2> n{items[0].Integer(), items[1].Integer()};
+    for (int k = 0; k < 2; ++k)
+      if (n[k] < 1) items[k].Fail("must be at least 1, got " + std::to_string(n[k]));
+    if (static_cast<double>(n[0]) * n[1] > 4e6)
+      e.Fail("more than 4 million elements (" + std::to_string(n[0]) + " x " +
+             std::to_string(n[1]) + ")");
+    spec.elements = n;
+  } else {
+    spec.size = c["size"].PositiveQuantity(dim::kLength);
+  }
+  return spec;
+}
+
+ImperfectionSpec SceneParser::ReadImperfection(const JsonCursor& c) {
+  c.ExpectObject({"amplitude", "seed", "pattern", "wavelength"});
+  ImperfectionSpec spec;
+  spec.amplitude = c["amplitude"].NonNegativeQuantity(dim::kLength);
+  if (auto s = c.Find("seed")) {
+    // nlohmann stores every non-negative integer literal as unsigned.
+    if (!s->value().is_number_unsigned()) s->Fail("expected a non-negative integer");
+    spec.seed = s->value().get<std::uint64_t>();
+  }
+  if (auto p = c.Find("pattern"))
+    spec.pattern = p->Choice({"smooth", "nodal"}) == 0 ? ImperfectionPattern::kSmooth
+                                                       : ImperfectionPattern::kNodal;
+  if (auto w = c.Find("wavelength")) spec.wavelength = w->PositiveQuantity(dim::kLength);
+  return spec;
+}
+
+}  // namespace drape

@@ -1,0 +1,94 @@
+// Reading a scene's obstacles (planes, boxes, cylinders, spheres, triangle
+// meshes from files) and how the fabric touches them and itself.
+#include "core/io/scene_parser.h"
+
+#include <algorithm>
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+}  // namespace
+
+Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
+  c.ExpectObject({"name", "plane", "box", "cylinder", "sphere", "mesh"});
+  Obstacle o;
+  o.name = ReadName(c, "obstacle");
+  switch (c.OneOf({"plane", "box", "cylinder", "sphere", "mesh"})) {
+    case 0: {
+      auto p = c["plane"];
+      p.ExpectObject({"point", "normal"});
+      o.shape = PlaneShape{p["point"].QuantityVec3(dim::kLength), p["normal"].Direction()};
+      break;
+    }
+    case 1: {
+      auto b = c["box"];
+      b.ExpectObject({"min", "max", "edge_radius"});
+      BoxShape box{b["min"].QuantityVec3(dim::kLength), b["max"].QuantityVec3(dim::kLength), 0};
+      double smallest = 1e300;
+      for (int k = 0; k < 3; ++k) {
+        if (!(box.max[k] > box.min[k]))
+          b["max"].Fail(
+              "each coordinate of 'max' must exceed that of 'min' (a box of zero or "
+              "negative size)");
+        smallest = std::min(smallest, box.max[k] - box.min[k]);
+      }
+      if (auto r = b.Find("edge_radius")) {
+        box.edge_radius = r->NonNegativeQuantity(dim::kLength);
+        if (box.edge_radius >= 0.5 * smallest)
+          r->Fail("must be smaller than half the box's smallest side");
+      }
+      o.shape = box;
+      break;
+    }
+    case 2: {
+      auto cy = c["cylinder"];
+      cy.ExpectObject({"point", "axis", "radius", "length"});
+      CylinderShape cyl;
+      cyl.point = cy["point"].QuantityVec3(dim::kLength);
+      cyl.axis = cy["axis"].Direction();
+      cyl.radius = cy["radius"].PositiveQuantity(dim::kLength);
+      if (auto l = cy.Find("length")) cyl.length = l->PositiveQuantity(dim::kLength);
+      o.shape = cyl;
+      break;
+    }
+    case 3: {
+      auto s = c["sphere"];
+      s.ExpectObject({"center", "radius"});
+      o.shape = SphereShape{s["center"].QuantityVec3(dim::kLength),
+                            s["radius"].PositiveQuantity(dim::kLength)};
+      break;
+    }
+    default: {
+      auto m = c["mesh"];
+      m.ExpectObject({"file"});
+      MeshShape mesh{ReadFileReference(m["file"]), {}};
+      const fs::path file(mesh.file);
+      mesh.resolved_path =
+          (file.is_absolute() ? file : fs::absolute(base_ / file)).lexically_normal().string();
+      o.shape = mesh;
+    }
+  }
+  return o;
+}
+
+Contact SceneParser::ReadContact(const JsonCursor& c) {
+  c.ExpectObject({"penalty", "friction", "self", "thickness"});
+  Contact contact;
+  if (auto p = c.Find("penalty")) {
+    if (p->value().is_string() && p->value().get<std::string>() == "auto")
+      contact.penalty = std::nullopt;
+    else
+      contact.penalty = p->PositiveQuantity(dim::kPenaltyPerArea);
+  }
+  if (auto f = c.Find("friction")) {
+    contact.friction = f->Number();
+    if (contact.friction < 0) f->Fail("a friction coefficient must not be negative");
+  }
+  if (auto s = c.Find("self")) contact.self = s->Boolean();
+  if (auto t = c.Find("thickness")) contact.thickness = t->PositiveQuantity(dim::kLength);
+  return contact;
+}
+
+}  // namespace drape

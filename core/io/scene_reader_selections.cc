@@ -1,0 +1,84 @@
+// Reading what a scene holds and loads the fabric by: the selections of
+// nodes, and the supports, grippers and point loads made of them.
+#include "core/io/scene_parser.h"
+
+namespace drape {
+
+Selection SceneParser::ReadSelection(const JsonCursor& c) {
+  c.ExpectObject({"point", "line", "box", "corners", "edge", "nodes", "tolerance"});
+  Selection s;
+  switch (c.OneOf({"point", "line", "box", "corners", "edge", "nodes"})) {
+    case 0:
+      s.shape = PointSelection{c["point"].QuantityVec2(dim::kLength)};
+      break;
+    case 1: {
+      auto ends = c["line"].Items(2);
+      LineSelection line{ends[0].QuantityVec2(dim::kLength), ends[1].QuantityVec2(dim::kLength)};
+      if (line.from == line.to) c["line"].Fail("the two ends of a line must differ");
+      s.shape = line;
+      break;
+    }
+    case 2: {
+      auto corners = c["box"].Items(2);
+      BoxSelection box{corners[0].QuantityVec2(dim::kLength),
+                       corners[1].QuantityVec2(dim::kLength)};
+      if (box.min[0] > box.max[0] || box.min[1] > box.max[1])
+        c["box"].Fail("expected [[xmin, ymin], [xmax, ymax]] with min <= max");
+      s.shape = box;
+      break;
+    }
+    case 3:
+      if (!c["corners"].Boolean()) c["corners"].Fail("write \"corners\": true to select corners");
+      s.shape = CornersSelection{};
+      break;
+    case 4: {
+      int side = c["edge"].Choice({"left", "right", "bottom", "top", "boundary"});
+      s.shape = EdgeSelection{static_cast<Side>(side)};
+      break;
+    }
+    default: {
+      auto nodes = c["nodes"];
+      NodesSelection n;
+      for (const auto& item : nodes.Items()) {
+        int index = item.Integer();
+        if (index < 0) item.Fail("node indices start at 0");
+        n.nodes.push_back(index);
+      }
+      if (n.nodes.empty()) nodes.Fail("an empty node list selects nothing");
+      s.shape = n;
+    }
+  }
+  if (auto t = c.Find("tolerance")) s.tolerance = t->PositiveQuantity(dim::kLength);
+  return s;
+}
+
+Support SceneParser::ReadSupport(const JsonCursor& c) {
+  c.ExpectObject({"name", "select", "fix"});
+  Support s;
+  s.name = ReadName(c, "support or gripper");
+  s.select = ReadSelection(c["select"]);
+  if (auto f = c.Find("fix")) s.fix = static_cast<Fixity>(f->Choice({"position", "clamp"}));
+  return s;
+}
+
+Gripper SceneParser::ReadGripper(const JsonCursor& c) {
+  c.ExpectObject({"name", "select", "hold"});
+  Gripper g;
+  g.name = ReadName(c, "support or gripper");
+  g.select = ReadSelection(c["select"]);
+  if (auto h = c.Find("hold")) g.hold = static_cast<Fixity>(h->Choice({"position", "clamp"}));
+  return g;
+}
+
+PointLoad SceneParser::ReadLoad(const JsonCursor& c) {
+  c.ExpectObject({"name", "select", "force", "moment"});
+  PointLoad load;
+  load.name = ReadName(c, "load");
+  load.select = ReadSelection(c["select"]);
+  if (!c.Has("force") && !c.Has("moment")) c.Fail("a load needs a 'force', a 'moment' or both");
+  if (auto f = c.Find("force")) load.force = f->QuantityVec3(dim::kForce);
+  if (auto m = c.Find("moment")) load.moment = m->QuantityVec3(dim::kMoment);
+  return load;
+}
+
+}  // namespace drape
