@@ -1,5 +1,5 @@
 // The `drape` subcommands. Each registers itself on the CLI11 app and, when
-// chosen, runs and returns the process exit code (FORMAT.md: 0 success,
+// chosen, runs and returns the process exit code (docs/format.md: 0 success,
 // 1 invalid input, 2 solver failure, 130 cancelled).
 #pragma once
 

@@ -25,7 +25,7 @@ class InterruptGuard {
 // The units the scene file is written in (SI when it cannot be read).
 UnitSystem ScenesOwnUnits(const std::string& file);
 
-// FORMAT.md's exit codes: 0 completed, 1 invalid input, 2 solver failure,
+// docs/format.md's exit codes: 0 completed, 1 invalid input, 2 solver failure,
 // 130 cancelled.
 int ExitCode(Termination t);
 

@@ -240,7 +240,7 @@ void SceneParser::ReadKawabataPoints(const JsonCursor& c, CurveBending& law) {
     law.moment_column = options.moment_column = names[1].String();
   }
   // The measured points, by default averaged over loading and unloading
-  // (FORMAT.md); a bad file is a scene error at this key, with its own
+  // (docs/format.md); a bad file is a scene error at this key, with its own
   // line number.
   const fs::path file(law.file);
   try {
