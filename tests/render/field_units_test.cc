@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/mechanics/director.h"
+#include "support/bent_strip.h"
 #include "support/display_required.h"
 #include "support/strip_scene.h"
 #include "ui/render/display.h"
@@ -26,28 +27,6 @@ class FieldUnitsTest : public ::testing::Test {
  protected:
   void SetUp() override { DRAPE_REQUIRE_DISPLAY(); }
 };
-
-// The cantilever strip bent to θ(s) = 15 s²/L: curvature from 0 at the
-// root to 30 1/m at the tip.
-ShellState BentStrip(const test::StripSpec& spec, const ShellModel& model) {
-  ShellState state = model.reference;
-  for (int i = 0; i < model.NodeCount(); ++i) {
-    const double s_end = model.reference.positions(i, 0);
-    double x = 0, z = 0;
-    const int n = 400;
-    for (int j = 0; j < n; ++j) {
-      const double s = (j + 0.5) * s_end / n;
-      const double th = 15.0 * s * s / spec.length;
-      x += std::cos(th) * s_end / n;
-      z += std::sin(th) * s_end / n;
-    }
-    state.positions(i, 0) = x;
-    state.positions(i, 2) = z;
-    const double th = 15.0 * s_end * s_end / spec.length;
-    state.rotations[i] = RotationFromDirector({-std::sin(th), 0, std::cos(th)});
-  }
-  return state;
-}
 
 vtkScalarBarActor* ScalarBar(FrameRenderer& renderer) {
   vtkPropCollection* props = renderer.renderer()->GetViewProps();
@@ -73,7 +52,7 @@ TEST_F(FieldUnitsTest, ColourBarShowsTheFieldInTheChosenUnits) {
   Scene scene = test::CantileverStrip(spec);
   scene.probes.clear();
   const ShellModel model = BuildShellModel(scene);
-  const ShellState state = BentStrip(spec, model);
+  const ShellState state = test::BentStrip(spec, model);
   const std::array<double, 2> si = FieldRange(FieldKind::kCurvature, model, {&state});
   ASSERT_GT(si[1], 25);  // near the tip's 30 1/m
   const struct {

@@ -17,6 +17,7 @@
 #include "core/io/scene_reader.h"
 #include "core/mechanics/director.h"
 #include "core/solve/shell_solver.h"
+#include "support/bent_strip.h"
 #include "support/display_required.h"
 #include "support/strip_scene.h"
 #include "support/test_paths.h"
@@ -161,23 +162,7 @@ TEST_F(FrameRendererTest, CurvatureFieldSpansTheColourMap) {
     Scene scene = test::CantileverStrip(spec);
     scene.probes.clear();
     const ShellModel model = BuildShellModel(scene);
-    ShellState state = model.reference;
-    // Integrate the centre line x(s), z(s) for θ(s) = 15 s²/L finely.
-    for (int i = 0; i < model.NodeCount(); ++i) {
-      const double s_end = model.reference.positions(i, 0);
-      double x = 0, z = 0;
-      const int n = 400;
-      for (int j = 0; j < n; ++j) {
-        const double s = (j + 0.5) * s_end / n;
-        const double th = 15.0 * s * s / spec.length;
-        x += std::cos(th) * s_end / n;
-        z += std::sin(th) * s_end / n;
-      }
-      state.positions(i, 0) = x;
-      state.positions(i, 2) = z;
-      const double th = 15.0 * s_end * s_end / spec.length;
-      state.rotations[i] = RotationFromDirector({-std::sin(th), 0, std::cos(th)});
-    }
+    const ShellState state = test::BentStrip(spec, model);  // θ(s) = 15 s²/L
     RenderOptions options = Bare(800, 500);
     options.field = FieldKind::kCurvature;
     options.colour_map = map;
