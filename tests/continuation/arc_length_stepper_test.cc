@@ -156,7 +156,9 @@ TEST(ArcLengthStepper, OnALinearPathTheFirstStepTakesTheRequestedIncrement) {
 
 // StepTo: λ → target under load control; the direction is (Δλ K⁻¹F₀
 // translations, Δλ), the length |Δλ|, and the state Δλ K⁻¹F₀ (the
-// predictor). Measured: direction 9.4e-14, state 1.3e-10 off.
+// predictor). Measured: direction 9.4e-14 (Release, -O3) and 4.5e-13 (the
+// sanitized build, -O2: the factorisation's round-off follows the order of
+// its sums), state 1.3e-10 off.
 TEST(ArcLengthStepper, StepToLandsOnTheTargetAlongTheLinearResponse) {
   const test::StripSpec spec = Strip(8);
   const double ea = spec.youngs_modulus * spec.width * spec.thickness;
@@ -177,7 +179,7 @@ TEST(ArcLengthStepper, StepToLandsOnTheTargetAlongTheLinearResponse) {
   const double state_error =
       (FreeTranslation(s, s.model.reference, state) - 0.4 * t).norm() / (0.4 * t.norm());
   std::printf("direction %.2e, state %.2e off 0.4 P x/EA\n", direction_error, state_error);
-  EXPECT_LT(direction_error, 4e-13);
+  EXPECT_LT(direction_error, 2e-12);
   EXPECT_LT(state_error, 5e-10);
 }
 
