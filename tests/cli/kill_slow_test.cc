@@ -46,8 +46,8 @@ int RunAndKill(const fs::path& scene,
   if (pid == 0) {
     const std::string scene_arg = scene.string(), out_arg = out.string();
     const char* argv[] = {
-        DRAPE_CLI, "run", scene_arg.c_str(), "-o", out_arg.c_str(), "--quiet", nullptr};
-    execv(DRAPE_CLI, const_cast<char* const*>(argv));
+        test::DrapeCli(), "run", scene_arg.c_str(), "-o", out_arg.c_str(), "--quiet", nullptr};
+    execv(test::DrapeCli(), const_cast<char* const*>(argv));
     _exit(127);
   }
   if (delay) {

@@ -136,7 +136,7 @@ TEST(MaterialListCli, AnInstalledProgramFindsItsOwnLibrary) {
   fs::create_directories(prefix / "bin");
   fs::create_directories(prefix / "share/drape/resources/materials");
   fs::create_directories(prefix / "elsewhere/materials");
-  fs::copy_file(DRAPE_CLI, prefix / "bin/drape");
+  fs::copy_file(test::DrapeCli(), prefix / "bin/drape");
   const fs::path material = test::SourceDir() / "resources/materials/cotton-twill-linear.json";
   fs::copy_file(material, prefix / "share/drape/resources/materials/installed-twill.json");
   fs::copy_file(material, prefix / "elsewhere/materials/elsewhere-twill.json");

@@ -232,7 +232,7 @@ TEST_F(RenderCli, AnimateGifOgvAndFramesOpen) {
 TEST_F(RenderCli, InterruptedAnimationLeavesNoMovie) {
   // A long animation, interrupted once it is under way: exit 130, and
   // neither the movie nor its partial file remains.
-  const std::string script = "(" + std::string(DRAPE_CLI) + " animate " + Fold() + " -o " +
+  const std::string script = "(" + std::string(test::DrapeCli()) + " animate " + Fold() + " -o " +
                              Out("long.mp4") +
                              " --size 320x240 --duration 120 --fps 30 & pid=$!; sleep 2; kill -INT "
                              "$pid; wait $pid; echo exit=$?) 2>&1";
@@ -282,7 +282,7 @@ TEST_F(RenderCli, AnInstalledDrapeFindsItsRenderProgram) {
   const fs::path prefix = dir_ / "installed";
   fs::create_directories(prefix / "bin");
   fs::create_directories(prefix / "libexec/drape");
-  fs::copy_file(DRAPE_CLI, prefix / "bin/drape");
+  fs::copy_file(test::DrapeCli(), prefix / "bin/drape");
   const std::string drape = (prefix / "bin/drape").string();
   const std::string export_csv =
       " export " + Fold() + " -o " + Out("installed-csv") + " --format csv --step last";
@@ -296,7 +296,7 @@ TEST_F(RenderCli, AnInstalledDrapeFindsItsRenderProgram) {
                 .exit_code,
             0);
 
-  fs::copy_file(fs::path(DRAPE_CLI).parent_path() / "drape-vtk",
+  fs::copy_file(fs::path(test::DrapeCli()).parent_path() / "drape-vtk",
                 prefix / "libexec/drape/drape-vtk");
   const auto installed = test::RunCommand(drape + export_csv);
   ASSERT_EQ(installed.exit_code, 0) << installed.output;
@@ -311,7 +311,7 @@ TEST_F(RenderCli, WithoutADisplayRenderingSaysToUseXvfb) {
   for (const std::string& command : {"render " + Fold() + " -o " + Out("nodisplay.png"),
                                      "animate " + Fold() + " -o " + Out("nodisplay.mp4")}) {
     const std::string env_command =
-        "env -u DISPLAY " + std::string(DRAPE_CLI) + " " + command + " 2>&1";
+        "env -u DISPLAY " + std::string(test::DrapeCli()) + " " + command + " 2>&1";
     FILE* pipe = popen(env_command.c_str(), "r");
     std::string out;
     char buf[512];

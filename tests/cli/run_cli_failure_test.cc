@@ -285,8 +285,9 @@ void InterruptLongRun(int signal_number, const std::string& name) {
     dup2(err, STDERR_FILENO);
     dup2(null, STDOUT_FILENO);
     const std::string scene_arg = scene.string(), out_arg = out.string();
-    const char* argv[] = {DRAPE_CLI, "run", scene_arg.c_str(), "-o", out_arg.c_str(), nullptr};
-    execv(DRAPE_CLI, const_cast<char* const*>(argv));
+    const char* argv[] = {
+        test::DrapeCli(), "run", scene_arg.c_str(), "-o", out_arg.c_str(), nullptr};
+    execv(test::DrapeCli(), const_cast<char* const*>(argv));
     _exit(127);
   }
 

@@ -21,6 +21,7 @@
 #include "support/drape_command.h"
 #include "support/run_cli.h"
 #include "support/temp_dir.h"
+#include "support/test_paths.h"
 
 namespace drape {
 namespace {
@@ -296,8 +297,8 @@ TEST(RunCliOutput, ProgressLineOnATerminal) {
     dup2(null, STDOUT_FILENO);
     close(master);
     const std::string scene_arg = scene.string();
-    const char* argv[] = {DRAPE_CLI, "run", scene_arg.c_str(), "-o", out.c_str(), nullptr};
-    execv(DRAPE_CLI, const_cast<char* const*>(argv));
+    const char* argv[] = {test::DrapeCli(), "run", scene_arg.c_str(), "-o", out.c_str(), nullptr};
+    execv(test::DrapeCli(), const_cast<char* const*>(argv));
     _exit(127);
   }
   close(slave);

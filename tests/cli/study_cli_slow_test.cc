@@ -39,8 +39,8 @@ TEST(StudyCli, ATwentyFourRunSweepResumesAfterCtrlC) {
                "solver.target_iterations": [4, 10]},
       "reference": {"fabric.mesh.elements": [80, 1], "solver.tolerance": 1e-8}})";
   const fs::path out = dir / "sweep";
-  const std::string command =
-      std::string(DRAPE_CLI) + " study '" + file.string() + "' -o '" + out.string() + "' --jobs 2";
+  const std::string command = std::string(test::DrapeCli()) + " study '" + file.string() +
+                              "' -o '" + out.string() + "' --jobs 2";
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {

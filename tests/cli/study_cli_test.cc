@@ -138,7 +138,7 @@ TEST_F(StudyCli, RunsAGridInParallelTabulatesItAndKeepsWhatIsDone) {
 // finished is tabulated, and the exit code says interrupted.
 TEST_F(StudyCli, CtrlCKeepsWhatFinishedAndARerunCompletes) {
   const fs::path out = dir_ / "out";
-  const std::string command = std::string(DRAPE_CLI) + " study '" + WriteStudy().string() +
+  const std::string command = std::string(test::DrapeCli()) + " study '" + WriteStudy().string() +
                               "' -o '" + out.string() + "' --jobs 1";
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);

@@ -302,7 +302,7 @@ namespace {
 // program does not link it (linking cost every process ~60 ms of start-up),
 // and a disk still meshes.
 TEST(ValidateCli, GmshIsLoadedOnlyForOutlinesThatNeedIt) {
-  const CommandResult ldd = test::RunCommand(std::string("ldd ") + DRAPE_CLI);
+  const CommandResult ldd = test::RunCommand(std::string("ldd ") + test::DrapeCli());
   ASSERT_EQ(ldd.exit_code, 0) << ldd.output;
   EXPECT_EQ(ldd.output.find("libgmsh"), std::string::npos) << ldd.output;
 

@@ -9,6 +9,8 @@
 #include "core/fe/shell_model.h"
 #include "core/io/scene_reader.h"
 
+#include "support/test_paths.h"
+
 namespace drape {
 namespace {
 
@@ -103,7 +105,7 @@ TEST(PathHandles, EachMoveStartsWhereTheGrippersLastMoveEnded) {
   // The paper's strip fold: the left edge (x = −10 cm) turns 180° about the
   // y axis through (0, 0, c), which puts it at (10 cm, 0, 2c), then slides 1 cm
   // (c = 0.75 h: the end lands 1.5 h above the lower layer).
-  const Scene scene = ReadScene(DRAPE_SOURCE_DIR "/resources/scenes/strip-fold.json");
+  const Scene scene = ReadScene(test::SourceDir() / "resources/scenes/strip-fold.json");
   const ShellModel model = BuildShellModel(scene);
   const auto moves = GripperMoves(scene, model);
   ASSERT_EQ(moves.size(), 2u);
@@ -120,7 +122,7 @@ TEST(PathHandles, EachMoveStartsWhereTheGrippersLastMoveEnded) {
 }
 
 TEST(PathHandles, ObstacleMovesStartAtTheAnchorWhereEarlierMovesLeftIt) {
-  Scene scene = ReadScene(DRAPE_SOURCE_DIR "/resources/scenes/strip-fold.json");
+  Scene scene = ReadScene(test::SourceDir() / "resources/scenes/strip-fold.json");
   // The table (its point at z = −c) lowered 1 cm by the fold stage, then
   // moved 2 cm along x by the slide.
   scene.stages[1].moves.push_back({"", LinePath{{0, 0, -0.01}}, "table"});

@@ -1,4 +1,4 @@
-// Runs the `drape` binary (DRAPE_CLI, set by the test build) through the
+// Runs the `drape` binary (test::DrapeCli(), set by the test build) through the
 // shell, as a user or a script would, and captures what it prints.
 #pragma once
 
@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdio>
 #include <string>
+
+#include "support/test_paths.h"
 
 namespace drape::test {
 
@@ -35,7 +37,7 @@ inline CommandResult RunCommand(const std::string& shell_command,
 
 // `drape ARGUMENTS`.
 inline CommandResult RunDrape(const std::string& arguments, Captured captured = Captured::kBoth) {
-  return RunCommand(std::string(DRAPE_CLI) + " " + arguments, captured);
+  return RunCommand(std::string(test::DrapeCli()) + " " + arguments, captured);
 }
 
 }  // namespace drape::test

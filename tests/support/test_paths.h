@@ -1,15 +1,22 @@
-// Paths the tests need, fixed at configure time.
+// Paths the tests need, fixed at configure time in test_paths.cc alone: a
+// test file that named them in macros would differ between checkouts, and
+// no compiler cache would reuse it.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace drape::test {
 
-inline std::filesystem::path SourceDir() {
-  return DRAPE_SOURCE_DIR;
-}
+// The source tree.
+std::filesystem::path SourceDir();
+// The `drape` program under test.
+const char* DrapeCli();
+// The `drape-studio` program ("" when the workbench is not built).
+const char* DrapeStudio();
+
 inline std::filesystem::path ScenesDir() {
   return SourceDir() / "resources" / "scenes";
 }

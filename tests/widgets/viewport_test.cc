@@ -511,7 +511,7 @@ TEST_F(Widgets, StudioRunsAScriptAndWritesANonBlackScreenshot) {
   const std::string shot = (std::filesystem::temp_directory_path() /
                             ("drape-studio-" + std::to_string(getpid()) + ".png"))
                                .string();
-  const std::string command = std::string(DRAPE_STUDIO) + " '" +
+  const std::string command = std::string(test::DrapeStudio()) + " '" +
                               (test::ScenesDir() / "strip-fold.json").string() +
                               "' --run --screenshot '" + shot + "' --quit 2>&1";
   FILE* pipe = popen(command.c_str(), "r");

@@ -165,7 +165,7 @@ TEST_F(WindowUnits, TheMaterialDialogDrawsInTheChosenSystem) {
 // refused before the window opens.
 TEST_F(WindowUnits, StudioTakesTheUnitsOnItsCommandLine) {
   auto studio = [](const std::string& args, std::string* out) {
-    const std::string command = std::string(DRAPE_STUDIO) + " " + args + " 2>&1";
+    const std::string command = std::string(test::DrapeStudio()) + " " + args + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     char buf[512];
     while (fgets(buf, sizeof buf, pipe)) *out += buf;
