@@ -95,6 +95,7 @@ class EquilibriumSystem {
   // K⁻¹ b with the last factorisation (free DOFs).
   Eigen::VectorXd Solve(const Eigen::VectorXd& b);
 
+  const ShellModel& model() const { return model_; }
   const DofMap& dofs() const { return dofs_; }
   const SystemTimers& timers() const { return timers_; }
   int ColorCount() const { return assembler_->ColorCount(); }

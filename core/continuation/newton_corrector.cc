@@ -4,7 +4,22 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/fe/element_orientation.h"
+
 namespace drape {
+namespace {
+
+// Why a converged iterate is still no equilibrium to accept ("": none): an
+// element turned inside out, or what the caller refuses.
+std::string Refusal(const EquilibriumSystem& system,
+                    const ShellState& state,
+                    const CorrectorRequest& request) {
+  if (const auto inverted = FindInvertedElement(system.model(), state))
+    return Describe(*inverted, system.model());
+  return request.refuse ? request.refuse(state) : "";
+}
+
+}  // namespace
 
 const char* ToString(Convergence c) {
   switch (c) {
@@ -92,8 +107,8 @@ NewtonOutcome RunCorrector(EquilibriumSystem& system,
                                         it,
                                         out.residuals,
                                         out.convergence);
-    if (v.done && v.status == NewtonOutcome::Status::kConverged && request.refuse)
-      if (std::string why = request.refuse(state); !why.empty())
+    if (v.done && v.status == NewtonOutcome::Status::kConverged)
+      if (std::string why = Refusal(system, state, request); !why.empty())
         v = {true, NewtonOutcome::Status::kDiverged, std::move(why)};
     if (v.done) {
       out.status = v.status;

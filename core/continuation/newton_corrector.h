@@ -123,7 +123,8 @@ struct CorrectorRequest {
   std::function<double(const Eigen::VectorXd& residual, ShellState& state)> correct;
   // Optional: a converged iterate the caller still refuses, and why ("" to
   // accept). A refused one ends the iteration as diverged, without the
-  // factorisation that would count its negative pivots.
+  // factorisation that would count its negative pivots. An iterate with an
+  // element turned inside out (element_orientation.h) is always refused.
   std::function<std::string(const ShellState& state)> refuse;
 };
 

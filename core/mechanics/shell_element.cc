@@ -272,6 +272,7 @@ ShellElementReference MakeShellElementReference(const NodeColumns& positions,
     const Eigen::Matrix<double, 3, 2> dt0 = directors * gp.dn;
     gp.metric0 = f0.transpose() * f0;
     gp.curvature0 = 0.5 * (f0.transpose() * dt0 + dt0.transpose() * f0);
+    gp.orientation0 = f0.col(0).cross(f0.col(1)).dot(directors * gp.n);
   }
   const double tie_xi[4] = {0, 0, -1, 1};
   const double tie_eta[4] = {-1, 1, 0, 0};
@@ -390,6 +391,18 @@ void EvaluateShellElement(const ShellElementReference& ref,
 
   AddTiedShearStiffness(ref, tied, tying_force, stiffness);
   AssembleHessian(stiffness, director_force, t, result.hessian);
+}
+
+std::array<double, 4> OrientedAreaRatios(const ShellElementReference& ref,
+                                         const NodeColumns& x,
+                                         const NodeColumns& t) {
+  std::array<double, 4> ratios;
+  for (int p = 0; p < 4; ++p) {
+    const auto& gp = ref.gauss[p];
+    const Eigen::Matrix<double, 3, 2> f = x * gp.dn;
+    ratios[p] = f.col(0).cross(f.col(1)).dot(t * gp.n) / gp.orientation0;
+  }
+  return ratios;
 }
 
 }  // namespace drape

@@ -36,6 +36,7 @@ struct ShellElementReference {
     double area = 0;                     // dA × Gauss weight [m²]
     Eigen::Matrix2d metric0;             // φ⁰,i·φ⁰,j
     Eigen::Matrix2d curvature0;          // ½(φ⁰,i·t⁰,j + φ⁰,j·t⁰,i) [1/m]
+    double orientation0 = 1;             // (φ⁰,₁ × φ⁰,₂)·t⁰ (local frame: ≈ 1)
   };
   struct TyingPoint {
     Eigen::Vector4d n;   // N_I at the tying point
@@ -86,5 +87,14 @@ std::array<Eigen::Vector3d, 4> BendingStrains(const ShellElementReference& refer
 // Gauss points, in the material frame.
 std::array<Eigen::Vector3d, 4> MembraneStrains(const ShellElementReference& reference,
                                                const NodeColumns& positions);
+
+// (φ,₁ × φ,₂)·t at the four Gauss points over its reference value: the
+// oriented area the element has now per reference area, seen along its
+// director. 1 undeformed; at or below 0 where the element has turned inside
+// out, which the strains cannot tell: ½(φ,ᵢ·φ,ⱼ − G) is the same for a
+// surface and its mirror image.
+std::array<double, 4> OrientedAreaRatios(const ShellElementReference& reference,
+                                         const NodeColumns& positions,
+                                         const NodeColumns& directors);
 
 }  // namespace drape

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "core/fe/element_orientation.h"
 #include "core/fe/stage_loading.h"
 #include "core/linalg/machine_resources.h"
 
@@ -135,7 +136,9 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
     const ShellState kept = basis_.state;
     const double reached = Predict(part * motion, frame);
     const double ratio = Correct(frame);
-    if (IsFinite(basis_.state) && ratio <= settings_.worst_ratio) {
+    // A frame never shows a state no part can be in.
+    if (IsFinite(basis_.state) && ratio <= settings_.worst_ratio &&
+        !FindInvertedElement(*basis_.model, basis_.state)) {
       taken += reached * part;
       offset_ += reached * part * motion;
       frame.residual_ratio = ratio;

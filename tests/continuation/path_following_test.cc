@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "core/fe/element_orientation.h"
 #include "core/io/result_reader.h"
 #include "core/io/result_writer.h"
 #include "core/io/scene_reader.h"
@@ -105,10 +106,15 @@ TEST(PathFollowing, OnAStablePathTheLoadFactorNeverFalls) {
   }});
   ASSERT_TRUE(summary.IsComplete()) << summary.message;
   // The step onto a branch at a bifurcation may start behind it: that
-  // switch is not a step along the path.
+  // switch is not a step along the path. (Until inside-out states were
+  // refused this path crossed a "bifurcation" at λ = 0.9017, 0 → 4 negative
+  // pivots; now one step there is cut back and the path crosses none. No
+  // state the old run kept was inside out: the unkept state past the
+  // crossing is the likely one.)
   std::set<int> switches;
   for (const StabilityEvent& e : summary.stability_events) switches.insert(e.step);
-  ASSERT_FALSE(switches.empty());  // the fold lands across a bifurcation
+  for (const StepState& s : steps)
+    EXPECT_FALSE(FindInvertedElement(solver.model(), s.state)) << "step " << s.step;
   int stable_pairs = 0;
   for (size_t i = 1; i < steps.size(); ++i) {
     const StepState &a = steps[i - 1], &b = steps[i];
