@@ -32,12 +32,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-test::StripSpec Strip(int elements) {
-  test::StripSpec spec;
-  spec.elements = elements;
-  return spec;
-}
-
 NewtonSettings Tight() {
   NewtonSettings n;
   n.tolerance = 1e-10;
@@ -69,7 +63,7 @@ Eigen::VectorXd PullTangent(const test::SceneSystem& s, double force, const test
 // The end moment M = EI/L (one radian at λ = 1): Δu is nonlinear in Δλ, so
 // the corrector has to move off the predictor to get back onto the sphere.
 TEST(ArcLengthStepper, ConvergedStepsLieOnTheirSphereToRoundOff) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ei = test::StripBendingStiffness(spec);
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, 0}, {0, ei / spec.length, 0}));
   const double psi = 0.05;
@@ -129,7 +123,7 @@ NewtonSettings Linear() {
 // predictor: Δλ = Δλ₀, Δu = Δλ₀ K⁻¹F₀. Measured: Δs 2.2e-15 off, Δλ exactly
 // 0.3, Δu 1.5e-10 off.
 TEST(ArcLengthStepper, OnALinearPathTheFirstStepTakesTheRequestedIncrement) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ea = spec.youngs_modulus * spec.width * spec.thickness;
   const double force = 1e-6 * ea;
   test::SceneSystem s(test::TipLoadedStrip(spec, {force, 0, 0}, {0, 0, 0}));
@@ -160,7 +154,7 @@ TEST(ArcLengthStepper, OnALinearPathTheFirstStepTakesTheRequestedIncrement) {
 // sanitized build, -O2: the factorisation's round-off follows the order of
 // its sums), state 1.3e-10 off.
 TEST(ArcLengthStepper, StepToLandsOnTheTargetAlongTheLinearResponse) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ea = spec.youngs_modulus * spec.width * spec.thickness;
   const double force = 1e-6 * ea;
   test::SceneSystem s(test::TipLoadedStrip(spec, {force, 0, 0}, {0, 0, 0}));
@@ -187,7 +181,7 @@ TEST(ArcLengthStepper, StepToLandsOnTheTargetAlongTheLinearResponse) {
 // translations of K⁻¹F₀ (here by hand). Secants just either side of the
 // plane Δu·t + ψ²Δλ = 0, 1 % off it.
 TEST(ArcLengthStepper, LambdaDirectionIsTheSideOfTheSecantAlongTheTangent) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ea = spec.youngs_modulus * spec.width * spec.thickness;
   const double force = 1e-6 * ea;
   test::SceneSystem s(test::TipLoadedStrip(spec, {force, 0, 0}, {0, 0, 0}));
@@ -209,7 +203,7 @@ TEST(ArcLengthStepper, LambdaDirectionIsTheSideOfTheSecantAlongTheTangent) {
 // ψΔλ = 12 is 13 long under a load; with the tip's two clamped nodes moved
 // by 0.2 m along x over the stage, ‖∂u_p/∂λ‖² = 2 · 0.2² = 0.08 m².
 TEST(ArcLengthStepper, LengthIsTheSecantInTheMetricWithThePrescribedSpeedFoldedIntoPsi) {
-  const test::StripSpec spec = Strip(2);
+  const test::StripSpec spec = test::StripOf(2);
   {
     test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, -1e-6}, {0, 0, 0}));
     ArcLengthStepper stepper(s.system, s.loading, Tight(), 2.0);
@@ -241,7 +235,7 @@ TEST(ArcLengthStepper, LengthIsTheSecantInTheMetricWithThePrescribedSpeedFoldedI
 // at λ = 1, in NewtonCorrector.EndMomentBendsTheStripIntoACircleOfRadiusEIOverM),
 // the last landing on λ = 1 exactly.
 TEST(ArcLengthStepper, StepsFollowTheEndMomentsCircleAndLandOnTheTarget) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ei = test::StripBendingStiffness(spec);
   const double moment = ei / spec.length;
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, 0}, {0, moment, 0}));
@@ -285,7 +279,7 @@ TEST(ArcLengthStepper, StepsFollowTheEndMomentsCircleAndLandOnTheTarget) {
 // residual within the tolerance of R₀ = |Δλ| ‖F₀‖ = P/√2 (P/2 on each of
 // the two tip nodes).
 TEST(ArcLengthStepper, AStepPastTheTargetLandsOnItAtPLCubedOver3EI) {
-  const test::StripSpec spec = Strip(16);
+  const test::StripSpec spec = test::StripOf(16);
   const double ei = test::StripBendingStiffness(spec);
   const double exact = 1e-3 * spec.length;
   const double force = 3 * ei * exact / std::pow(spec.length, 3);
@@ -323,7 +317,7 @@ TEST(ArcLengthStepper, AStepPastTheTargetLandsOnItAtPLCubedOver3EI) {
 TEST(ArcLengthStepper, StepAlongEndsOnItsHyperplaneOnTheElastica) {
   std::vector<double> ratios;  // λ over the elastica's
   for (int elements : {8, 16}) {
-    const test::StripSpec spec = Strip(elements);
+    const test::StripSpec spec = test::StripOf(elements);
     const double euler =
         kPi * kPi * test::StripBendingStiffness(spec) / (4 * spec.length * spec.length);
     test::SceneSystem s(test::TipLoadedStrip(spec, {-2 * euler, 0, 0}, {0, 0, 0}));

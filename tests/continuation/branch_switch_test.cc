@@ -34,18 +34,13 @@ double EulerLoad(const test::StripSpec& spec) {
 // points the switch starts from.
 struct Column {
   explicit Column(int elements, NewtonSettings newton = Tight())
-      : spec(Spec(elements)),
+      : spec(test::StripOf(elements)),
         s(test::TipLoadedStrip(spec, {-2 * EulerLoad(spec), 0, 0}, {0, 0, 0})),
         stepper(s.system, s.loading, newton, s.model.characteristic_length) {
     start = {s.model.reference, 0.0, {}};
     crossing = {s.model.reference, 0.0, {}};
     crossing.step = stepper.Step(crossing.state, {.lambda = 0, .first_increment = 0.75}, nullptr);
     crossing.lambda = crossing.step.lambda;
-  }
-  static test::StripSpec Spec(int elements) {
-    test::StripSpec spec;
-    spec.elements = elements;
-    return spec;
   }
   static NewtonSettings Tight() {
     NewtonSettings n;

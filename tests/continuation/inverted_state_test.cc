@@ -18,12 +18,7 @@ namespace drape {
 namespace {
 
 struct UnloadedStrip {
-  UnloadedStrip() : s(test::TipLoadedStrip(Spec(), {0, 0, 0}, {0, 0, 0})) {}
-  static test::StripSpec Spec() {
-    test::StripSpec spec;
-    spec.elements = 8;
-    return spec;
-  }
+  UnloadedStrip() : s(test::TipLoadedStrip(test::StripOf(8), {0, 0, 0}, {0, 0, 0})) {}
   ShellState Mirrored() const {
     ShellState state = s.model.reference;
     state.positions.col(0) *= -1;

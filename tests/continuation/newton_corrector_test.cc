@@ -29,12 +29,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-test::StripSpec Strip(int elements) {
-  test::StripSpec spec;
-  spec.elements = elements;
-  return spec;
-}
-
 // The stage's full load (λ = 1) as SolveEquilibrium takes it.
 ExternalForce FullLoad(const test::SceneSystem& s) {
   return [&s](const ShellState& state) { return s.loading.External(1.0, state); };
@@ -171,7 +165,7 @@ TEST(NewtonCorrector, EndMomentBendsTheStripIntoACircleOfRadiusEIOverM) {
   };
   std::vector<Eigen::Vector3d> tips;
   for (const Within& w : {Within{8, 3e-3, 5e-3, 4e-3}, Within{16, 7e-4, 1.2e-3, 1e-3}}) {
-    const test::StripSpec spec = Strip(w.elements);
+    const test::StripSpec spec = test::StripOf(w.elements);
     const double ei = test::StripBendingStiffness(spec);
     const double radius = spec.length;  // one radian of bend: M = EI/L
     test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, 0}, {0, ei / radius, 0}));
@@ -204,7 +198,7 @@ TEST(NewtonCorrector, EndMomentBendsTheStripIntoACircleOfRadiusEIOverM) {
     EXPECT_LT(width, 1e-13 * spec.length);
     EXPECT_LT(tip_error, w.tip * spec.length);
   }
-  const double length = Strip(8).length;
+  const double length = test::StripOf(8).length;
   const Eigen::Vector3d extrapolated = (4 * tips[1] - tips[0]) / 3;
   const double error = (extrapolated - test::ArcPoint(length, length)).norm() / length;
   std::printf("extrapolated tip: %.3e L\n", error);
@@ -224,7 +218,7 @@ TEST(NewtonCorrector, EndMomentBendsTheStripIntoACircleOfRadiusEIOverM) {
 // per unit of error is EA/EI = 4.8e7 m⁻² times the bending residual it
 // replaced.
 TEST(NewtonCorrector, ConvergesQuadraticallyOnACantileverUnderAnEndMoment) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ei = test::StripBendingStiffness(spec);
   const double radius = spec.length;
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, 0}, {0, ei / radius, 0}));
@@ -273,7 +267,7 @@ TEST(NewtonCorrector, ConvergesQuadraticallyOnACantileverUnderAnEndMoment) {
 TEST(NewtonCorrector, SmallTipForceDeflectsTheTipByPLCubedOver3EI) {
   std::vector<double> ratios;
   for (int elements : {8, 16}) {
-    const test::StripSpec spec = Strip(elements);
+    const test::StripSpec spec = test::StripOf(elements);
     const double ei = test::StripBendingStiffness(spec);
     const double exact = 1e-3 * spec.length;
     const double force = 3 * ei * exact / std::pow(spec.length, 3);
@@ -298,7 +292,7 @@ TEST(NewtonCorrector, SmallTipForceDeflectsTheTipByPLCubedOver3EI) {
 // Euler load below P, P_n = (2n − 1)² π²EI/4L² (1, 9, 25 × P_E). The
 // straight state is the exact equilibrium (the corrections stay axial).
 TEST(NewtonCorrector, ConvergedTangentHasOneNegativePivotPerEulerLoadPassed) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double euler =
       kPi * kPi * test::StripBendingStiffness(spec) / (4 * spec.length * spec.length);
   const struct {
@@ -320,7 +314,7 @@ TEST(NewtonCorrector, ConvergedTangentHasOneNegativePivotPerEulerLoadPassed) {
 // ‖R₀‖ at the flat strip under a tip force P (F_int = 0 there) is the load
 // itself over the free DOFs: P/2 on each of the tip's two nodes, P/√2.
 TEST(NewtonCorrector, RatiosAreTakenAgainstTheFirstResidualTheGivenOneOrTheForceLevel) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double force = 3 * test::StripBendingStiffness(spec) * 0.01 / std::pow(spec.length, 2);
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, -force}, {0, 0, 0}));
   NewtonSettings settings;
@@ -367,7 +361,7 @@ TEST(NewtonCorrector, RatiosAreTakenAgainstTheFirstResidualTheGivenOneOrTheForce
 TEST(NewtonCorrector, StopsAtTheIterationLimitWithThatManyCorrections) {
   // δ/L ≈ 0.3 under the tip force: Newton from the flat strip needs 10
   // corrections (measured), more than the 2 allowed.
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double force = 3 * test::StripBendingStiffness(spec) * 0.3 / std::pow(spec.length, 2);
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, -force}, {0, 0, 0}));
   NewtonSettings settings;
@@ -387,7 +381,7 @@ TEST(NewtonCorrector, StopsAtTheIterationLimitWithThatManyCorrections) {
 // residual, so the ratios are 2⁻ᵏ and the tolerance 1.5e-3 is first met
 // after k = 10 corrections (2⁻⁹ = 1.95e-3, 2⁻¹⁰ = 9.8e-4).
 TEST(NewtonCorrectorLoop, CountsEachCorrectionAndRecordsOneRatioPerAssembly) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double ea = spec.youngs_modulus * spec.width * spec.thickness;
   test::SceneSystem s(test::TipLoadedStrip(spec, {1e-6 * ea, 0, 0}, {0, 0, 0}));
   CorrectorRequest request;
@@ -433,7 +427,7 @@ TEST(NewtonCorrectorLoop, CountsEachCorrectionAndRecordsOneRatioPerAssembly) {
 // its tangent is not factorised for the pivot count: the column at 2 P_E,
 // whose converged tangent has one negative pivot when accepted.
 TEST(NewtonCorrectorLoop, ARefusedConvergedIterateEndsDivergedWithoutItsPivotCount) {
-  const test::StripSpec spec = Strip(8);
+  const test::StripSpec spec = test::StripOf(8);
   const double euler =
       kPi * kPi * test::StripBendingStiffness(spec) / (4 * spec.length * spec.length);
   test::SceneSystem s(test::TipLoadedStrip(spec, {-2 * euler, 0, 0}, {0, 0, 0}));
@@ -466,7 +460,7 @@ TEST(NewtonCorrectorLoop, ARefusedConvergedIterateEndsDivergedWithoutItsPivotCou
 }
 
 TEST(NewtonCorrectorLoop, ACancelledRunOrANonFiniteStateStopsBeforeAssembling) {
-  const test::StripSpec spec = Strip(2);
+  const test::StripSpec spec = test::StripOf(2);
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, -1e-6}, {0, 0, 0}));
   int assemblies = 0;
   CorrectorRequest request;

@@ -17,6 +17,11 @@ struct StripSpec {
   int elements = 40;
 };
 
+// The default strip on `elements` elements.
+inline StripSpec StripOf(int elements) {
+  return {.elements = elements};
+}
+
 inline double StripBendingStiffness(const StripSpec& s) {  // EI [N·m²]
   return s.youngs_modulus * s.width * std::pow(s.thickness, 3) / 12.0;
 }
