@@ -152,6 +152,20 @@ void NodeContact::Add(const ShellState& state,
   }
 }
 
+double NodeContact::Energy(const ShellState& state) const {
+  double energy = 0;
+  ForEachContact(state,
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                   const double f_n = Respond(state, i, o, g, q, x).normal_force;
+                   energy += 0.5 * f_n * f_n / (penalty_ * area_[i]);
+                 });
+  if (stabilization_ <= 0.0) return energy;
+  for (int i = 0; i < state.NodeCount(); ++i)
+    if (held_.empty() || !held_[i])
+      energy += 0.5 * stabilization_ * (state.positions.row(i) - anchors_.row(i)).squaredNorm();
+  return energy;
+}
+
 void NodeContact::Augment(const ShellState& state) {
   ForEachContact(state,
                  [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {

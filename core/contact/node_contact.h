@@ -63,6 +63,11 @@ class NodeContact {
            const Eigen::VectorXd* velocity,
            Eigen::VectorXd* rate) const;
 
+  // The energy whose gradient Add's normal and stabilisation forces are [J]:
+  // ½ k A (m/(kA) − g)² per node pressed in (m the multiplier), ½ s |x − a|²
+  // per spring. Friction dissipates; it has none.
+  double Energy(const ShellState& state) const;
+
   // The stabilisation springs and the friction anchors start again from
   // `state` (a converged step).
   void Commit(const ShellState& state);

@@ -101,6 +101,17 @@ double EquilibriumSystem::Assemble(const ShellState& state,
   return energy;
 }
 
+double EquilibriumSystem::PotentialEnergy(const ShellState& state,
+                                          const Eigen::VectorXd& external) {
+  double energy = Assemble(state, /*with_tangent=*/false);
+  if (contact_) energy += contact_->Energy(state);
+  const Positions& reference = model_.reference.positions;
+  for (int i = 0; i < model_.NodeCount(); ++i)
+    energy -= external.segment<3>(kDofsPerNode * i)
+                  .dot((state.positions.row(i) - reference.row(i)).transpose());
+  return energy;
+}
+
 bool EquilibriumSystem::AddSelfContact(const ShellState& state, bool with_tangent, double& energy) {
   const SelfContactEvaluation e = self_contact_->Evaluate(state.positions, with_tangent);
   self_contact_positions_ = state.positions;
@@ -222,6 +233,14 @@ double EquilibriumSystem::RoundOffLevel(const ShellState& state) const {
 
 Eigen::VectorXd EquilibriumSystem::TangentDiagonal() const {
   return tangent_.diagonal();
+}
+
+void EquilibriumSystem::ShiftTangentDiagonal(const Eigen::VectorXd& shift) {
+  // The upper triangle is stored by columns: each column's last entry is its
+  // diagonal.
+  const int* outer = tangent_.outerIndexPtr();
+  double* values = tangent_.valuePtr();
+  for (int c = 0; c < tangent_.outerSize(); ++c) values[outer[c + 1] - 1] += shift(c);
 }
 
 FactorizationInfo EquilibriumSystem::Factorize() {

@@ -67,6 +67,13 @@ class EquilibriumSystem {
   double Assemble(const ShellState& state,
                   bool with_tangent,
                   const Eigen::VectorXd* velocity = nullptr);
+  // The total potential energy at `state` under the loads `external` (full, 5
+  // per node) [J]: strain energy, self-contact barrier and obstacle contact
+  // (NodeContact::Energy), less the forces' work from the reference
+  // positions. Moments act on the nodal bases and have no potential here.
+  // Assembles the force (not the tangent) there.
+  double PotentialEnergy(const ShellState& state, const Eigen::VectorXd& external);
+
   // The full internal force of the last assembly (5 per node).
   const Eigen::VectorXd& InternalForce() const { return internal_; }
   const Eigen::VectorXd& InternalForceRate() const { return rate_; }
@@ -89,6 +96,10 @@ class EquilibriumSystem {
 
   // The diagonal of the last assembled tangent (free DOFs).
   Eigen::VectorXd TangentDiagonal() const;
+
+  // Adds `shift` (free DOFs) to the diagonal of the last assembled tangent:
+  // K + μD for the energy minimiser. The next assembly starts afresh.
+  void ShiftTangentDiagonal(const Eigen::VectorXd& shift);
 
   // Factorises the last assembled tangent.
   FactorizationInfo Factorize();

@@ -119,8 +119,13 @@ NewtonOutcome RunCorrector(EquilibriumSystem& system,
         out.negative_pivots = system.Factorize().negative_pivots;
       return out;
     }
-    system.Factorize();
+    if (!request.correct_factorizes) system.Factorize();
     last_correction = request.correct(r.free, state);
+    if (last_correction < 0) {
+      out.status = NewtonOutcome::Status::kDiverged;
+      out.reason = "no correction found";
+      return out;
+    }
     ++out.iterations;
   }
 }

@@ -118,9 +118,14 @@ struct CorrectorRequest {
   // Assembles the system (tangent included) at `state`; `iteration` counts
   // from 0.
   std::function<Residual(const ShellState& state, int iteration)> assemble;
-  // With the tangent factorised at `state`: computes the correction from
-  // the residual, applies it to `state`, and returns max|Δu| [m].
+  // With the tangent factorised at `state` (unless `correct_factorizes`):
+  // computes the correction from the residual, applies it to `state`, and
+  // returns max|Δu| [m]; a negative value when it found none, which ends the
+  // iteration as diverged.
   std::function<double(const Eigen::VectorXd& residual, ShellState& state)> correct;
+  // `correct` factorises what it solves with itself (a shifted tangent), so
+  // the corrector does not factorise the assembled one first.
+  bool correct_factorizes = false;
   // Optional: a converged iterate the caller still refuses, and why ("" to
   // accept). A refused one ends the iteration as diverged, without the
   // factorisation that would count its negative pivots. An iterate with an

@@ -1,0 +1,195 @@
+#include "core/continuation/energy_minimiser.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/linalg/critical_modes.h"
+
+namespace drape {
+namespace {
+
+// A step whose corrector needs at most this many corrections lets μ fall,
+// one that needs more than kSlowStep makes it rise.
+constexpr int kQuickStep = 5;
+constexpr int kSlowStep = 8;
+constexpr int kStepIterations = 12;  // corrections a step may take
+constexpr double kDragFactor = 2;
+// A step's corrector converges when its residual is this fraction of the
+// true residual it started from: the next step goes on from there.
+constexpr double kStepTolerance = 1e-3;
+
+// D: |diag K| on the free translations (floored, so that a DOF the tangent
+// barely sees still feels the drag), 0 on the rotations.
+Eigen::VectorXd DragScale(const EquilibriumSystem& system) {
+  const DofMap& dofs = system.dofs();
+  const Eigen::VectorXd diagonal = system.TangentDiagonal().cwiseAbs();
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs.FreeCount());
+  for (int dof = 0; dof < dofs.DofCount(); ++dof)
+    if (const int f = dofs.Free(dof); f >= 0 && dof % kDofsPerNode < 3) d(f) = diagonal(f);
+  const double floor = 1e-12 * std::max(d.maxCoeff(), 1e-300);
+  for (int dof = 0; dof < dofs.DofCount(); ++dof)
+    if (const int f = dofs.Free(dof); f >= 0 && dof % kDofsPerNode < 3)
+      d(f) = std::max(d(f), floor);
+  return d;
+}
+
+// x − x₀ on the free translations, 0 on the rotations.
+Eigen::VectorXd TranslationOffset(const DofMap& dofs,
+                                  const ShellState& from,
+                                  const ShellState& to) {
+  Eigen::VectorXd offset = Eigen::VectorXd::Zero(dofs.FreeCount());
+  for (int node = 0; node < from.positions.rows(); ++node)
+    for (int a = 0; a < 3; ++a)
+      if (const int f = dofs.Free(kDofsPerNode * node + a); f >= 0)
+        offset(f) = to.positions(node, a) - from.positions(node, a);
+  return offset;
+}
+
+struct ProximalStepResult {
+  bool accepted = false;
+  NewtonOutcome newton;
+};
+
+// One step of the iteration from `state` (moved to q₊ when accepted) with
+// drag `mu`: the corrector on R(q) + μD(x − xₙ) and K + μD.
+ProximalStepResult ProximalStep(EquilibriumSystem& system,
+                                const ExternalForce& external,
+                                const NewtonSettings& newton,
+                                const Eigen::VectorXd& drag_scale,
+                                double mu,
+                                ShellState& state,
+                                const CancellationToken* cancel) {
+  const ShellState start = state;
+  ProximalStepResult out;
+  double reference = 0;
+  CorrectorRequest request;
+  request.settings = newton;
+  request.settings.tolerance = kStepTolerance;
+  request.settings.relative_to_force_level = false;
+  request.settings.max_iterations = kStepIterations;
+  request.assemble = [&](const ShellState& s, int iteration) {
+    system.Assemble(s, /*with_tangent=*/true);
+    Eigen::VectorXd r = system.Residual(external(s));
+    if (iteration == 0) reference = r.norm();
+    if (mu > 0) {
+      r += mu * drag_scale.cwiseProduct(TranslationOffset(system.dofs(), start, s));
+      system.ShiftTangentDiagonal(mu * drag_scale);
+    }
+    return CorrectorRequest::Residual{std::move(r), reference};
+  };
+  request.correct = [&](const Eigen::VectorXd& r, ShellState& s) {
+    return ApplyNewtonCorrection(system, r, s);
+  };
+  out.newton = RunCorrector(system, state, request, cancel);
+  // A local minimum of the step's problem: converged where K + μD is definite.
+  out.accepted =
+      out.newton.status == NewtonOutcome::Status::kConverged && out.newton.negative_pivots == 0;
+  if (!out.accepted) state = start;
+  return out;
+}
+
+// Leaves a saddle along its lowest mode: a step of `length` [m] (largest
+// translation) along it, from the tangent factorised at `state`.
+bool LeaveSaddle(EquilibriumSystem& system, double length, ShellState& state) {
+  std::vector<CriticalMode> modes;
+  try {
+    modes = CriticalModes(LastFactorizedTangent(system), 1);
+  } catch (const std::exception&) {
+    return false;
+  }
+  if (modes.empty()) return false;
+  const Eigen::VectorXd increment = system.dofs().Expand(modes[0].shape);
+  const double largest = MaxTranslation(increment);
+  if (!(largest > 0)) return false;
+  ApplyIncrement(increment * (length / largest), state);
+  return true;
+}
+
+// Whether `state` is at rest: ‖R‖ within the tolerance (or the round-off
+// floor), judged as the corrector judges a fixed-λ step. Leaves the system
+// assembled there.
+bool AtRest(EquilibriumSystem& system,
+            const ExternalForce& external,
+            const NewtonSettings& newton,
+            const ShellState& state,
+            MinimiserOutcome& out) {
+  system.Assemble(state, /*with_tangent=*/true);
+  const Eigen::VectorXd f = external(state);
+  const double norm = system.Residual(f).norm();
+  const double ratio = norm / std::max(system.ForceLevel(f), 1e-300);
+  out.newton.residuals.push_back(ratio);
+  if (ratio <= newton.tolerance) {
+    out.newton.convergence = Convergence::kTolerance;
+    return true;
+  }
+  if (norm <= newton.round_off_factor * system.RoundOffLevel(state)) {
+    out.newton.convergence = Convergence::kRoundOff;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
+                                const ExternalForce& external,
+                                const MinimiserSettings& settings,
+                                ShellState& state,
+                                const CancellationToken* cancel) {
+  MinimiserOutcome out;
+  NewtonOutcome& result = out.newton;
+  const NewtonSettings& newton = settings.newton;
+  double mu = settings.initial_drag;
+  int restarts = 0;
+  Eigen::VectorXd drag_scale;
+  const double energy_before = system.PotentialEnergy(state, external(state));
+  auto finish = [&](NewtonOutcome::Status status, std::string reason) {
+    result.status = status;
+    result.reason = std::move(reason);
+    out.energy_change = system.PotentialEnergy(state, external(state)) - energy_before;
+    return out;
+  };
+  for (;;) {
+    if (const IterationVerdict v = CheckBeforeAssembly(state, cancel); v.done)
+      return finish(v.status, v.reason);
+    if (AtRest(system, external, newton, state, out)) {
+      result.negative_pivots = system.Factorize().negative_pivots;
+      if (result.negative_pivots == 0) return finish(NewtonOutcome::Status::kConverged, "");
+      // An equilibrium, but a saddle: the energy falls along its unstable modes.
+      if (restarts++ >= settings.max_restarts ||
+          !LeaveSaddle(system, 1e-3 * system.model().characteristic_length, state))
+        return finish(NewtonOutcome::Status::kDiverged,
+                      "the minimiser ends at an unstable equilibrium (" +
+                          std::to_string(result.negative_pivots) + " negative pivots)");
+      continue;
+    }
+    if (drag_scale.size() == 0) drag_scale = DragScale(system);
+    if (result.iterations >= newton.max_iterations)
+      return finish(NewtonOutcome::Status::kIterationLimit,
+                    "no rest state in " + std::to_string(result.iterations) + " iterations (" +
+                        std::to_string(out.steps) +
+                        " steps; ‖R‖/‖R₀‖ = " + Number(result.residuals.back()) + ")");
+    if (mu > settings.largest_drag)
+      return finish(
+          NewtonOutcome::Status::kDiverged,
+          "no step lowers the energy (drag μ above " + Number(settings.largest_drag) + ")");
+    const ProximalStepResult step =
+        ProximalStep(system, external, newton, drag_scale, mu, state, cancel);
+    result.iterations += step.newton.iterations;
+    if (step.newton.status == NewtonOutcome::Status::kCancelled)
+      return finish(step.newton.status, step.newton.reason);
+    if (!step.accepted) {
+      ++out.refused_steps;
+      mu = kDragFactor * std::max(mu, settings.smallest_drag);
+      continue;
+    }
+    ++out.steps;
+    if (step.newton.iterations <= kQuickStep)
+      mu = mu / kDragFactor < settings.smallest_drag ? 0.0 : mu / kDragFactor;
+    else if (step.newton.iterations > kSlowStep)
+      mu = kDragFactor * std::max(mu, settings.smallest_drag);
+  }
+}
+
+}  // namespace drape
