@@ -78,6 +78,7 @@ class NodeContact {
     stabilization_ = per_node;
     held_ = std::move(held);
   }
+  const std::vector<bool>& stabilization_held() const { return held_; }
 
   // Augmented Lagrangian (Uzawa): each node's multiplier takes its present
   // normal force, so the next equilibrium needs that much less penetration.

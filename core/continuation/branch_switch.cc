@@ -12,46 +12,8 @@
 namespace drape {
 namespace {
 
-struct Bracket {
-  PathPoint lo, hi;
-  double lo_s = 0, hi_s = 0;  // arc length from the start
-};
-
 bool Cancelled(const ContinuationStep& step) {
   return step.status == NewtonOutcome::Status::kCancelled;
-}
-
-// Bisects the crossing step until the count changes within the tolerance.
-// Returns false when cancelled.
-bool Locate(ArcLengthStepper& stepper,
-            const PathPoint& start,
-            const PathDirection* previous,
-            int pivots_before,
-            const BifurcationSettings& settings,
-            const CancellationToken* cancel,
-            Bracket& b,
-            int& iterations) {
-  auto located = [&] {
-    return b.hi_s - b.lo_s <= settings.locate_fraction * (settings.path_before + b.lo_s);
-  };
-  for (int k = 0; k < settings.max_bisections && !located(); ++k) {
-    const double mid = 0.5 * (b.lo_s + b.hi_s);
-    PathPoint trial{start.state, start.lambda, {}};
-    trial.step = stepper.Step(
-        trial.state, {.lambda = start.lambda, .arc_length = mid, .previous = previous}, cancel);
-    iterations += trial.step.iterations;
-    if (Cancelled(trial.step)) return false;
-    if (trial.step.status != NewtonOutcome::Status::kConverged) break;  // keep what we have
-    trial.lambda = trial.step.landed ? 1.0 : trial.step.lambda;
-    if (trial.step.negative_pivots > pivots_before) {
-      b.hi = std::move(trial);
-      b.hi_s = mid;
-    } else {
-      b.lo = std::move(trial);
-      b.lo_s = mid;
-    }
-  }
-  return true;
 }
 
 double LargestTranslation(const ShellState& from, const ShellState& to) {
@@ -116,6 +78,40 @@ BranchSearch SearchBranches(ArcLengthStepper& stepper,
 
 }  // namespace
 
+CrossingBracket LocateCrossing(ArcLengthStepper& stepper,
+                               const PathPoint& start,
+                               const PathDirection* previous,
+                               const PathPoint& crossing,
+                               int pivots_before,
+                               const BifurcationSettings& settings,
+                               const CancellationToken* cancel) {
+  CrossingBracket b{start, crossing, 0.0, crossing.step.arc_length};
+  auto located = [&] {
+    return b.hi_s - b.lo_s <= settings.locate_fraction * (settings.path_before + b.lo_s);
+  };
+  for (int k = 0; k < settings.max_bisections && !located(); ++k) {
+    const double mid = 0.5 * (b.lo_s + b.hi_s);
+    PathPoint trial{start.state, start.lambda, {}};
+    trial.step = stepper.Step(
+        trial.state, {.lambda = start.lambda, .arc_length = mid, .previous = previous}, cancel);
+    b.iterations += trial.step.iterations;
+    if (Cancelled(trial.step)) {
+      b.cancelled = true;
+      return b;
+    }
+    if (trial.step.status != NewtonOutcome::Status::kConverged) break;  // keep what we have
+    trial.lambda = trial.step.landed ? 1.0 : trial.step.lambda;
+    if (trial.step.negative_pivots > pivots_before) {
+      b.hi = std::move(trial);
+      b.hi_s = mid;
+    } else {
+      b.lo = std::move(trial);
+      b.lo_s = mid;
+    }
+  }
+  return b;
+}
+
 BranchSwitch SwitchBranch(ArcLengthStepper& stepper,
                           EquilibriumSystem& system,
                           const PathPoint& start,
@@ -132,8 +128,10 @@ BranchSwitch SwitchBranch(ArcLengthStepper& stepper,
     return o;
   };
 
-  Bracket b{start, crossing, 0.0, crossing.step.arc_length};
-  if (!Locate(stepper, start, previous, pivots_before, settings, cancel, b, out.iterations)) {
+  const CrossingBracket b =
+      LocateCrossing(stepper, start, previous, crossing, pivots_before, settings, cancel);
+  out.iterations += b.iterations;
+  if (b.cancelled) {
     out.cancelled = true;
     out.failure = "cancelled";
     return finish(out);
@@ -141,6 +139,7 @@ BranchSwitch SwitchBranch(ArcLengthStepper& stepper,
   out.lambda = 0.5 * (b.lo.lambda + b.hi.lambda);
   out.negative_pivots_fundamental = b.hi.step.negative_pivots;
   if (b.lo_s > 0) out.bifurcation = b.lo;
+  out.past = b.hi;
 
   // The critical modes from the tangent just past the point.
   system.Assemble(b.hi.state, /*with_tangent=*/true);
@@ -154,6 +153,7 @@ BranchSwitch SwitchBranch(ArcLengthStepper& stepper,
     return finish(out);
   }
   out.modes = static_cast<int>(modes.size());
+  if (!modes.empty()) out.mode = modes.front().shape;
 
   BranchSearch search = SearchBranches(stepper, b.lo, modes, pivots_before, settings, cancel);
   out.iterations += search.iterations;

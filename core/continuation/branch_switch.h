@@ -43,6 +43,28 @@ struct BifurcationSettings {
   Eigen::VectorXd imperfection;
 };
 
+// A crossing step bisected until the count of negative pivots changes within
+// the settings' tolerance: `lo` has the count of before, `hi` more; their
+// arc lengths from the start.
+struct CrossingBracket {
+  PathPoint lo, hi;
+  double lo_s = 0, hi_s = 0;
+  int iterations = 0;
+  bool cancelled = false;
+};
+
+// `start`: the last accepted point (its count `pivots_before`); `crossing`:
+// the converged step beyond it whose count rose; `previous`: the direction
+// that arrived at `start` (null at a stage's start). A step of the bisection
+// that does not converge ends it with the bracket it has.
+CrossingBracket LocateCrossing(ArcLengthStepper& stepper,
+                               const PathPoint& start,
+                               const PathDirection* previous,
+                               const PathPoint& crossing,
+                               int pivots_before,
+                               const BifurcationSettings& settings,
+                               const CancellationToken* cancel);
+
 struct BranchSwitch {
   bool switched = false;
   bool cancelled = false;
@@ -55,6 +77,11 @@ struct BranchSwitch {
   double lambda = 0;                    // the located bifurcation (the bracket's middle)
   int negative_pivots_fundamental = 0;  // on the primary path just past it
   int modes = 0;
+  // The first point past the bifurcation on the primary path, and the
+  // critical mode nearest zero there (free DOFs; empty when none was found):
+  // where a part with no stable branch snaps from.
+  PathPoint past;
+  Eigen::VectorXd mode;
   double max_displacement = 0;  // largest nodal translation from the bifurcation to the branch [m]
   int iterations = 0;           // of the bisection and the switch steps
   double seconds = 0;

@@ -3,7 +3,15 @@
 namespace drape {
 
 const char* ToString(StabilityKind kind) {
-  return kind == StabilityKind::kLimit ? "limit" : "bifurcation";
+  switch (kind) {
+    case StabilityKind::kLimit:
+      return "limit";
+    case StabilityKind::kBifurcation:
+      return "bifurcation";
+    case StabilityKind::kSnap:
+      return "snap";
+  }
+  return "?";
 }
 
 const char* ToString(Branch branch) {

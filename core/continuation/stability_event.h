@@ -6,15 +6,18 @@ namespace drape {
 
 // What the number of negative pivots changing between two converged steps
 // means: a limit point (λ turns along the path: snap-through, snap-back) or a
-// bifurcation (the count changes while λ keeps its direction).
-enum class StabilityKind { kLimit, kBifurcation };
+// bifurcation (the count changes while λ keeps its direction). A snap is the
+// jump a part makes at either when no stable path goes on from it (under
+// solver.branching: stable): at the same λ, to the rest state the energy
+// minimiser finds.
+enum class StabilityKind { kLimit, kBifurcation, kSnap };
 // Which way the path went on from a bifurcation.
 enum class Branch {
   kFundamental,  // on along the primary path (solver.branching: fundamental)
   kStable,       // switched to a secondary branch with the pivots of before
   kNone,         // not a bifurcation (a limit point), or no branch was found
 };
-const char* ToString(StabilityKind kind);  // "limit", "bifurcation"
+const char* ToString(StabilityKind kind);  // "limit", "bifurcation", "snap"
 const char* ToString(Branch branch);       // "fundamental", "stable", "none"
 
 // A change in the number of negative pivots between two converged steps: the
@@ -35,6 +38,12 @@ struct StabilityEvent {
   double mode_max_displacement = 0;
   int switch_iterations = 0;
   double switch_s = 0;
+  // Snaps: the point the path met (kLimit or kBifurcation), the energy the
+  // jump released [J], its largest nodal translation [m] (in
+  // mode_max_displacement), and what the minimiser cost (in
+  // switch_iterations, switch_s).
+  StabilityKind trigger = StabilityKind::kLimit;
+  double energy_released = 0;
 };
 
 }  // namespace drape

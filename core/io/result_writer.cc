@@ -226,6 +226,14 @@ nlohmann::json ResultWriter::Document(const SolveSummary& summary,
       event["switch_iterations"] = e.switch_iterations;
       event["switch_s"] = e.switch_s;
     }
+    if (e.kind == StabilityKind::kSnap) {
+      event["trigger"] = ToString(e.trigger);
+      event["negative_pivots_fundamental"] = e.negative_pivots_fundamental;
+      event["energy_released"] = e.energy_released;
+      event["max_displacement"] = e.mode_max_displacement;
+      event["iterations"] = e.switch_iterations;
+      event["time_s"] = e.switch_s;
+    }
     r["stability_events"].push_back(std::move(event));
   }
   r["notes"] = summary.notes;

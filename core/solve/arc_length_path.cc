@@ -9,6 +9,7 @@
 #include "core/solve/bifurcation_passage.h"
 #include "core/solve/converged_step.h"
 #include "core/solve/run_diagnostics.h"
+#include "core/solve/snap_passage.h"
 #include "core/solve/stage_runner.h"
 
 namespace drape {
@@ -37,6 +38,14 @@ struct PathPosition {
   std::optional<PathDirection> previous;
   double last_landing = NAN;  // λ where the last branch switch landed
   double lowest = 0;          // the smallest λ the path reached
+
+  // After a jump the path starts afresh where the part landed, its first
+  // step sized from Δλ₀.
+  void GoOnAfterSnap(double landed) {
+    lambda = landed;
+    arc_length = 0;
+    previous.reset();
+  }
 };
 
 }  // namespace
@@ -76,14 +85,28 @@ StageOutcome RunArcLength(SolveRun& run,
     cuts_in_a_row = 0;
     const std::optional<StabilityEvent> event =
         PivotChange(run, stepper, step, run.lambda_direction);
-    if (event && SwitchesAt(run, *event, step)) {
-      PathPoint branch;
-      const Crossing crossing{
+    auto crossing = [&] {
+      return Crossing{
           PathPoint{saved, at.lambda, {}}, previous, PathPoint{run.state, event->lambda, step}};
-      if (StageOutcome o =
-              PassBifurcation(run, index, loading, stepper, crossing, *event, stage, branch);
+    };
+    if (event && SnapsAt(run, *event, step)) {
+      PathPoint landed;
+      if (StageOutcome o = SnapAtLimit(run, index, loading, stepper, crossing(), stage, landed);
           !o.GoesOn())
         return o;
+      at.GoOnAfterSnap(landed.lambda);
+      continue;
+    }
+    if (event && SwitchesAt(run, *event, step)) {
+      PathPoint branch;
+      if (StageOutcome o =
+              PassBifurcation(run, index, loading, stepper, crossing(), *event, stage, branch);
+          !o.GoesOn())
+        return o;
+      if (branch.step.direction.translation.size() == 0) {  // it snapped
+        at.GoOnAfterSnap(branch.lambda);
+        continue;
+      }
       // Landing where the last switch landed: forward from there led back to
       // the same bifurcation (the branch bends back; the part would snap).
       // Let the path go the way the switch pointed instead of round again.

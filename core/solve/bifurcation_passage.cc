@@ -3,6 +3,7 @@
 #include "core/model/string_format.h"
 #include "core/solve/converged_step.h"
 #include "core/solve/run_diagnostics.h"
+#include "core/solve/snap_passage.h"
 
 namespace drape {
 namespace {
@@ -16,19 +17,29 @@ constexpr double kLocateFraction = 1e-3;
 // definite by more than round-off.
 constexpr double kSwitchAmplitude = 1e-3;
 
-// Records a point the switch reached as the stage's next step.
-StageOutcome RecordPoint(SolveRun& run,
-                         int index,
-                         const StageLoading& loading,
-                         const PathPoint& point,
-                         StageSummary& stage,
-                         const StabilityEvent* event = nullptr) {
+}  // namespace
+
+BifurcationSettings PassageSettings(const SolveRun& run) {
+  BifurcationSettings settings;
+  settings.locate_fraction = kLocateFraction;
+  settings.path_before = run.stage_path_length;
+  settings.amplitude = kSwitchAmplitude * run.model.characteristic_length;
+  settings.rotation_length = run.element_size;
+  if (run.imperfection.size() == run.model.DofCount())
+    settings.imperfection = run.dofs->Restrict(run.imperfection);
+  return settings;
+}
+
+StageOutcome RecordPathPoint(SolveRun& run,
+                             int index,
+                             const StageLoading& loading,
+                             const PathPoint& point,
+                             StageSummary& stage,
+                             const StabilityEvent* event) {
   ++stage.steps;
   stage.final_lambda = point.lambda;
   return RecordConvergedStep(run, {index, stage.steps, point.lambda}, loading, point.step, event);
 }
-
-}  // namespace
 
 StabilityEvent ClassifyPivotChange(int direction_before, int direction, double lambda) {
   StabilityEvent e;
@@ -63,13 +74,7 @@ StageOutcome PassBifurcation(SolveRun& run,
                              StageSummary& stage,
                              PathPoint& reached) {
   const std::string& name = run.scene.stages[index].name;
-  BifurcationSettings settings;
-  settings.locate_fraction = kLocateFraction;
-  settings.path_before = run.stage_path_length;
-  settings.amplitude = kSwitchAmplitude * run.model.characteristic_length;
-  settings.rotation_length = run.element_size;
-  if (run.imperfection.size() == run.model.DofCount())
-    settings.imperfection = run.dofs->Restrict(run.imperfection);
+  const BifurcationSettings settings = PassageSettings(run);
   const int before = run.recorder->last_negative_pivots();
   const BranchSwitch sw = SwitchBranch(stepper,
                                        *run.system,
@@ -84,13 +89,29 @@ StageOutcome PassBifurcation(SolveRun& run,
     run.state = crossing.start.state;
     return StageOutcome::Cancelled("in stage '" + name + "' at a bifurcation");
   }
+  if (!sw.switched && sw.mode.size() > 0 && run.options.branching == Branching::kStable) {
+    // No stable branch: the part snaps, from the primary path just past the
+    // point, pushed along the critical mode the way the imperfection leans.
+    SnapStart start{sw.bifurcation ? *sw.bifurcation : crossing.start,
+                    sw.past.state,
+                    sw.past.lambda,
+                    StabilityKind::kBifurcation,
+                    sw.negative_pivots_fundamental};
+    const bool against =
+        settings.imperfection.size() == sw.mode.size() && sw.mode.dot(settings.imperfection) < 0;
+    Eigen::VectorXd push = run.dofs->Expand(sw.mode);
+    push *= (against ? -1 : 1) * settings.amplitude / std::max(MaxTranslation(push), 1e-300);
+    ApplyIncrement(push, start.pushed);
+    return Snap(run, index, loading, start, sw.bifurcation.has_value(), stage, reached);
+  }
   if (!sw.switched) {
     // Keep the last stable point the bisection found: the part's state just
     // before it would snap.
     run.state = crossing.start.state;
     if (sw.bifurcation) {
       run.state = sw.bifurcation->state;
-      if (StageOutcome o = RecordPoint(run, index, loading, *sw.bifurcation, stage); !o.GoesOn())
+      if (StageOutcome o = RecordPathPoint(run, index, loading, *sw.bifurcation, stage);
+          !o.GoesOn())
         return o;
     }
     return StageOutcome::Stop(
@@ -109,7 +130,7 @@ StageOutcome PassBifurcation(SolveRun& run,
   if (sw.bifurcation) {
     run.state = sw.bifurcation->state;
     run.stage_path_length += sw.bifurcation->step.arc_length;
-    if (StageOutcome o = RecordPoint(run, index, loading, *sw.bifurcation, stage); !o.GoesOn())
+    if (StageOutcome o = RecordPathPoint(run, index, loading, *sw.bifurcation, stage); !o.GoesOn())
       return o;
   }
   run.state = sw.branch.state;
@@ -123,7 +144,7 @@ StageOutcome PassBifurcation(SolveRun& run,
   ++run.summary.branch_switches;
   run.stage_path_length += sw.branch.step.arc_length;
   reached = sw.branch;
-  return RecordPoint(run, index, loading, sw.branch, stage, &event);
+  return RecordPathPoint(run, index, loading, sw.branch, stage, &event);
 }
 
 }  // namespace drape

@@ -41,10 +41,25 @@ struct Crossing {
   PathPoint past;
 };
 
+// How the run locates a critical point and steps along its modes: the
+// bracket to kLocateFraction of the stage's path, the switch's amplitude, the
+// scene's imperfection.
+BifurcationSettings PassageSettings(const SolveRun& run);
+
+// Records a point a passage reached as the stage's next step.
+StageOutcome RecordPathPoint(SolveRun& run,
+                             int index,
+                             const StageLoading& loading,
+                             const PathPoint& point,
+                             StageSummary& stage,
+                             const StabilityEvent* event = nullptr);
+
 // Locates the bifurcation, switches to a secondary branch and records the
 // points reached (the bifurcation, the first point on the branch) into
-// `reached`; the stepping goes on from there. A stop when no branch could be
-// followed (kNoStableBranch) or the run was cancelled.
+// `reached`; the stepping goes on from there. Where no branch can be
+// followed the part snaps (snap_passage.h) and `reached` is where it landed;
+// a stop when it finds no rest state (kNoStableBranch) or the run was
+// cancelled.
 StageOutcome PassBifurcation(SolveRun& run,
                              int index,
                              const StageLoading& loading,

@@ -61,9 +61,11 @@ StageOutcome RunLoadControl(SolveRun& run,
               PassBifurcation(run, index, loading, stepper, crossing, *event, stage, branch);
           !o.GoesOn())
         return o;
-      increment = std::max(
-          kIncrementAfterSwitch * (branch.lambda - run.summary.stability_events.back().lambda),
-          kSmallestIncrementAfterSwitch * spec.initial_increment);
+      increment = run.summary.stability_events.back().kind == StabilityKind::kSnap
+                      ? spec.initial_increment  // the part landed at rest: start afresh
+                      : std::max(kIncrementAfterSwitch *
+                                     (branch.lambda - run.summary.stability_events.back().lambda),
+                                 kSmallestIncrementAfterSwitch * spec.initial_increment);
       lambda = branch.lambda;
       continue;
     }

@@ -36,7 +36,23 @@ const char* ToString(Termination t) {
 
 std::string Describe(const StabilityEvent& e) {
   char line[320];
-  if (e.kind == StabilityKind::kLimit || e.branch == Branch::kNone) {
+  if (e.kind == StabilityKind::kSnap) {
+    std::snprintf(line,
+                  sizeof line,
+                  "snap at stage %d step %d, lambda %.6g: past a %s point (negative pivots %d -> "
+                  "%d) the part jumped to a stable rest state, releasing %.3g J, largest "
+                  "displacement %.3g m; %d iterations, %.3f s",
+                  e.stage,
+                  e.step,
+                  e.lambda,
+                  ToString(e.trigger),
+                  e.negative_pivots_before,
+                  e.negative_pivots_fundamental,
+                  e.energy_released,
+                  e.mode_max_displacement,
+                  e.switch_iterations,
+                  e.switch_s);
+  } else if (e.kind == StabilityKind::kLimit || e.branch == Branch::kNone) {
     std::snprintf(line,
                   sizeof line,
                   "%s point at stage %d step %d, lambda %.6g: negative pivots %d -> %d",
@@ -95,9 +111,10 @@ std::string SolveSummary::BriefReport() const {
                 step_cuts,
                 total_s);
   std::string out = line;
-  int limits = 0, switched = 0, followed = 0;
+  int limits = 0, switched = 0, followed = 0, snaps = 0;
   for (const auto& e : stability_events) {
     if (e.kind == StabilityKind::kLimit) ++limits;
+    if (e.kind == StabilityKind::kSnap) ++snaps;
     if (e.kind == StabilityKind::kBifurcation && e.branch == Branch::kStable) ++switched;
     if (e.kind == StabilityKind::kBifurcation && e.branch == Branch::kFundamental &&
         e.negative_pivots_after > e.negative_pivots_before)
@@ -109,6 +126,7 @@ std::string SolveSummary::BriefReport() const {
     out += line;
   };
   count(limits, "limit point", "limit points");
+  count(snaps, "snap", "snaps");
   count(switched, "bifurcation onto a stable branch", "bifurcations onto stable branches");
   count(followed,
         "bifurcation followed on the unstable primary path",

@@ -47,7 +47,8 @@ void StepRecorder::RecordStabilityEvent(StepState& step, const StabilityEvent* c
     e.step = step.step;
     e.negative_pivots_before = last_negative_pivots_;
     e.negative_pivots_after = step.negative_pivots;
-    if (e.branch != Branch::kStable) e.negative_pivots_fundamental = step.negative_pivots;
+    if (e.branch != Branch::kStable && e.kind != StabilityKind::kSnap)
+      e.negative_pivots_fundamental = step.negative_pivots;
     summary_.stability_events.push_back(e);
     step.stability_event = e;
   }

@@ -203,11 +203,12 @@ TEST(RunCliFailure, ATimeLimitStopsTheRunAndKeepsItsSteps) {
 
 // A strip balanced on a frictionless rod is a chain over a pulley: once its
 // weight outgrows the stabilisation springs, its symmetric hang bifurcates
-// and every branch from there slides off (the part would snap). Under
-// `stable` branching that is a clear failure with every step kept, the last
-// one the stable state just before the bifurcation; under `fundamental` the
-// run converges on the primary path and warns that it ends unstable.
-TEST(RunCliFailure, ABifurcationWithNoStableBranchFailsAndKeepsItsSteps) {
+// and every branch from there slides off. Under `stable` branching the part
+// snaps, and with the springs off while it jumps nothing holds it: no rest
+// state, a clear failure that says why, with every step kept, the last one
+// the stable state just before the bifurcation; under `fundamental` the run
+// converges on the primary path and warns that it ends unstable.
+TEST(RunCliFailure, ASnapWithNoRestStateFailsSaysWhyAndKeepsItsSteps) {
   TempDir dir("no-stable-branch");
   json doc = {
       {"drape_scene", 1},
@@ -231,8 +232,9 @@ TEST(RunCliFailure, ABifurcationWithNoStableBranchFailsAndKeepsItsSteps) {
   const json result = ReadJson(dir / "out" / "result.json");
   EXPECT_EQ(result["status"], "failed");
   const std::string message = result["message"];
-  EXPECT_NE(message.find("bifurcates"), std::string::npos) << message;
-  EXPECT_NE(message.find("no stable branch"), std::string::npos) << message;
+  EXPECT_NE(message.find("past a bifurcation point"), std::string::npos) << message;
+  EXPECT_NE(message.find("no rest state"), std::string::npos) << message;
+  EXPECT_NE(message.find("can slide off the obstacle"), std::string::npos) << message;
   ASSERT_GE(result["steps"].size(), 1u);
   EXPECT_EQ(result["steps"].back()["negative_pivots"], 0);
   EXPECT_LT(result["steps"].back()["lambda"].get<double>(), 0.01);

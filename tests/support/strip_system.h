@@ -59,9 +59,11 @@ inline Eigen::Vector3d ProbeAt(const ShellModel& model,
 }
 
 struct SceneSystem {
-  explicit SceneSystem(const Scene& s)
+  explicit SceneSystem(const Scene& s) : SceneSystem(s, BuildShellModel(s)) {}
+  // On a model built from a mesh of the caller's (BuildShellModel(s, mesh)).
+  SceneSystem(const Scene& s, ShellModel m)
       : scene(s),
-        model(BuildShellModel(scene)),
+        model(std::move(m)),
         dofs(HeldDofs(model)),
         system(model, dofs),
         loading(model, scene.stages.at(0), ReferenceHolds(model, scene.stages.at(0)), 0.0, 0.0) {}

@@ -1,0 +1,189 @@
+#include "core/solve/snap_passage.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/continuation/energy_minimiser.h"
+#include "core/model/string_format.h"
+#include "core/solve/converged_step.h"
+#include "core/solve/run_diagnostics.h"
+
+namespace drape {
+namespace {
+
+// Past a located limit point the part jumps at λ_c(1 + kPastLimit): the
+// bracket gives λ_c to about the square of its length, and just above λ_c
+// the stable state near the fold no longer exists. Where the minimiser still
+// falls back onto it, the margin grows tenfold, at most kLimitTries times.
+constexpr double kPastLimit = 1e-5;
+constexpr int kLimitTries = 3;
+// The minimiser's corrections, in units of the options' Newton limit: a jump
+// takes tens of steps where a path step takes one.
+constexpr int kMinimiserIterationsPerNewton = 40;
+
+double LargestTranslation(const ShellState& from, const ShellState& to) {
+  return (to.positions - from.positions).rowwise().norm().maxCoeff();
+}
+
+// The minimiser run at the start's λ, from its pushed state.
+struct Jump {
+  MinimiserOutcome outcome;
+  ShellState state;
+  double seconds = 0;
+};
+
+Jump JumpFrom(SolveRun& run, const StageLoading& loading, const SnapStart& start) {
+  const auto clock = std::chrono::steady_clock::now();
+  Jump jump;
+  jump.state = start.pushed;
+  loading.Place(start.lambda, jump.state);
+  // The contact stabilisation's springs hold the nodes where the last step
+  // left them: a part that snaps must not land on them (it would rest
+  // propped by an artificial force), so they are off while it jumps.
+  struct Suspended {
+    NodeContact* contact;
+    double per_node;
+    std::vector<bool> held;
+    ~Suspended() {
+      if (contact) contact->SetStabilization(per_node, held);
+    }
+  } springs{run.contact.get(),
+            run.contact ? run.contact->stabilization() : 0.0,
+            run.contact ? run.contact->stabilization_held() : std::vector<bool>{}};
+  if (run.contact) run.contact->SetStabilization(0.0, springs.held);
+  MinimiserSettings settings;
+  settings.newton = run.Newton();
+  settings.newton.max_iterations *= kMinimiserIterationsPerNewton;
+  jump.outcome = MinimiseEnergy(
+      *run.system,
+      [&](const ShellState& s) { return loading.External(start.lambda, s); },
+      settings,
+      jump.state,
+      run.cancel);
+  jump.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  return jump;
+}
+
+StageOutcome RecordSnap(SolveRun& run,
+                        int index,
+                        const StageLoading& loading,
+                        const SnapStart& start,
+                        const Jump& jump,
+                        bool record_before,
+                        StageSummary& stage,
+                        PathPoint& landed,
+                        bool jumped = true) {
+  run.CountIterations(jump.outcome.newton.iterations, stage);
+  const std::string& name = run.scene.stages[index].name;
+  const NewtonOutcome& newton = jump.outcome.newton;
+  run.state = start.before.state;
+  if (newton.status == NewtonOutcome::Status::kCancelled)
+    return StageOutcome::Cancelled("in stage '" + name + "' while it snapped");
+  if (record_before)
+    if (StageOutcome o = RecordPathPoint(run, index, loading, start.before, stage); !o.GoesOn())
+      return o;
+  if (newton.status != NewtonOutcome::Status::kConverged)
+    return StageOutcome::Stop(
+        Termination::kNoStableBranch,
+        Format("stage '%s' (stages[%d]): past a %s point at λ = %.6g the part snaps, but no "
+               "rest state was found for it to land in: ",
+               name.c_str(),
+               index,
+               ToString(start.trigger),
+               start.lambda) +
+            newton.reason + ". solver.branching: fundamental follows the unstable path instead" +
+            ContactHint(run));
+  StabilityEvent event;
+  event.kind = StabilityKind::kSnap;
+  event.trigger = start.trigger;
+  event.branch = Branch::kNone;
+  event.lambda = start.lambda;
+  event.negative_pivots_fundamental = start.pivots_past;
+  event.energy_released = -jump.outcome.energy_change;
+  event.mode_max_displacement = LargestTranslation(start.before.state, jump.state);
+  event.switch_iterations = newton.iterations;
+  event.switch_s = jump.seconds;
+  landed.state = jump.state;
+  landed.lambda = start.lambda;
+  landed.step = {};
+  landed.step.status = NewtonOutcome::Status::kConverged;
+  landed.step.iterations = newton.iterations;
+  landed.step.residuals = newton.residuals;
+  landed.step.convergence = newton.convergence;
+  landed.step.negative_pivots = newton.negative_pivots;
+  landed.step.lambda = start.lambda;
+  run.state = jump.state;
+  run.lambda_direction = 1;
+  return RecordPathPoint(run, index, loading, landed, stage, jumped ? &event : nullptr);
+}
+
+}  // namespace
+
+bool SnapsAt(const SolveRun& run, const StabilityEvent& event, const ContinuationStep& step) {
+  return event.kind == StabilityKind::kLimit && run.recorder->last_negative_pivots() == 0 &&
+         step.negative_pivots > 0 && run.options.branching == Branching::kStable;
+}
+
+StageOutcome Snap(SolveRun& run,
+                  int index,
+                  const StageLoading& loading,
+                  const SnapStart& start,
+                  bool record_before,
+                  StageSummary& stage,
+                  PathPoint& landed) {
+  const Jump jump = JumpFrom(run, loading, start);
+  return RecordSnap(run, index, loading, start, jump, record_before, stage, landed);
+}
+
+StageOutcome SnapAtLimit(SolveRun& run,
+                         int index,
+                         const StageLoading& loading,
+                         ArcLengthStepper& stepper,
+                         const Crossing& crossing,
+                         StageSummary& stage,
+                         PathPoint& landed) {
+  const int before = run.recorder->last_negative_pivots();
+  const CrossingBracket b = LocateCrossing(stepper,
+                                           crossing.start,
+                                           crossing.previous,
+                                           crossing.past,
+                                           before,
+                                           PassageSettings(run),
+                                           run.cancel);
+  run.CountIterations(b.iterations, stage);
+  if (b.cancelled) {
+    run.state = crossing.start.state;
+    return StageOutcome::Cancelled("in stage '" + run.scene.stages[index].name +
+                                   "' at a limit point");
+  }
+  // The limit load: the larger λ of the bracket's ends (λ peaks inside it).
+  const double limit = std::max(b.lo.lambda, b.hi.lambda);
+  // Falling back onto the fold's stable state moves the part by about the
+  // bracket's own width; a jump goes much further.
+  const double fell_back = 10 * LargestTranslation(b.lo.state, b.hi.state);
+  SnapStart start{b.lo, b.hi.state, limit, StabilityKind::kLimit, b.hi.step.negative_pivots};
+  Jump jump;
+  bool jumped = false;
+  for (int k = 0; k < kLimitTries && !jumped; ++k) {
+    if (k > 0) run.CountIterations(jump.outcome.newton.iterations, stage);
+    start.lambda =
+        std::min(1.0, limit + kPastLimit * std::pow(10.0, k) * std::max(std::abs(limit), 1e-3));
+    jump = JumpFrom(run, loading, start);
+    if (jump.outcome.newton.status != NewtonOutcome::Status::kConverged) break;
+    jumped = LargestTranslation(b.lo.state, jump.state) > fell_back;
+  }
+  // Still on the fold's stable side: no jump at this λ, the path goes on
+  // from the rest state found.
+  return RecordSnap(run,
+                    index,
+                    loading,
+                    start,
+                    jump,
+                    b.lo_s > 0,
+                    stage,
+                    landed,
+                    jumped || jump.outcome.newton.status != NewtonOutcome::Status::kConverged);
+}
+
+}  // namespace drape

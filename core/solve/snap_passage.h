@@ -1,0 +1,57 @@
+// Where a path under solver.branching: stable meets a point past which no
+// stable path goes on — a limit point of a rising λ, a bifurcation with no
+// stable branch — the part snaps: at that λ it jumps to the stable rest state
+// the energy minimiser finds (energy_minimiser.h), and the path goes on from
+// there. The last stable point before the jump and the landing are recorded
+// as two steps at (nearly) the same λ, the landing with a `snap` event.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/continuation/arc_length_stepper.h"
+#include "core/continuation/branch_switch.h"
+#include "core/continuation/stability_event.h"
+#include "core/fe/stage_loading.h"
+#include "core/solve/bifurcation_passage.h"
+#include "core/solve/solve_run.h"
+
+namespace drape {
+
+// Whether the run snaps at this event: a limit point met from a stable state
+// under `stable` branching (λ would run back along an unstable path).
+bool SnapsAt(const SolveRun& run, const StabilityEvent& event, const ContinuationStep& step);
+
+// Where a jump starts: the last stable point before the critical point, the
+// state the minimiser starts from (past the point, or moved along its
+// unstable mode) and the λ at which the part jumps.
+struct SnapStart {
+  PathPoint before;
+  ShellState pushed;
+  double lambda = 0;
+  StabilityKind trigger = StabilityKind::kLimit;
+  int pivots_past = 0;  // on the path just past the point
+};
+
+// The jump itself: minimises the energy at `start.lambda` from `start.pushed`,
+// records `start.before` (when it is not the stage's last recorded point)
+// and the landing, and leaves run.state there; `landed` is its point. A stop
+// when no rest state is found (kNoStableBranch, the state before the jump
+// kept) or the run was cancelled.
+StageOutcome Snap(SolveRun& run,
+                  int index,
+                  const StageLoading& loading,
+                  const SnapStart& start,
+                  bool record_before,
+                  StageSummary& stage,
+                  PathPoint& landed);
+
+// Past a limit point: locates it on the crossing step and snaps from there.
+StageOutcome SnapAtLimit(SolveRun& run,
+                         int index,
+                         const StageLoading& loading,
+                         ArcLengthStepper& stepper,
+                         const Crossing& crossing,
+                         StageSummary& stage,
+                         PathPoint& landed);
+
+}  // namespace drape
