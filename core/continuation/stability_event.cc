@@ -14,6 +14,18 @@ const char* ToString(StabilityKind kind) {
   return "?";
 }
 
+const char* ToString(SnapTrigger trigger) {
+  switch (trigger) {
+    case SnapTrigger::kLimit:
+      return "limit";
+    case SnapTrigger::kBifurcation:
+      return "bifurcation";
+    case SnapTrigger::kStart:
+      return "start";
+  }
+  return "?";
+}
+
 const char* ToString(Branch branch) {
   switch (branch) {
     case Branch::kFundamental:

@@ -17,8 +17,13 @@ enum class Branch {
   kStable,       // switched to a secondary branch with the pivots of before
   kNone,         // not a bifurcation (a limit point), or no branch was found
 };
-const char* ToString(StabilityKind kind);  // "limit", "bifurcation", "snap"
-const char* ToString(Branch branch);       // "fundamental", "stable", "none"
+// What a part snapped at: a limit point, a bifurcation with no stable
+// branch, or a stage's start where it cannot carry the first increment (a
+// mechanism: a sheet held at two corners swings about the line through them).
+enum class SnapTrigger { kLimit, kBifurcation, kStart };
+const char* ToString(StabilityKind kind);   // "limit", "bifurcation", "snap"
+const char* ToString(Branch branch);        // "fundamental", "stable", "none"
+const char* ToString(SnapTrigger trigger);  // "limit", "bifurcation", "start"
 
 // A change in the number of negative pivots between two converged steps: the
 // path crossed a limit or bifurcation point.
@@ -38,11 +43,10 @@ struct StabilityEvent {
   double mode_max_displacement = 0;
   int switch_iterations = 0;
   double switch_s = 0;
-  // Snaps: the point the path met (kLimit or kBifurcation), the energy the
-  // jump released [J], its largest nodal translation [m] (in
-  // mode_max_displacement), and what the minimiser cost (in
-  // switch_iterations, switch_s).
-  StabilityKind trigger = StabilityKind::kLimit;
+  // Snaps: what the path met, the energy the jump released [J], its largest
+  // nodal translation [m] (in mode_max_displacement), and what the minimiser
+  // cost (in switch_iterations, switch_s).
+  SnapTrigger trigger = SnapTrigger::kLimit;
   double energy_released = 0;
 };
 

@@ -99,7 +99,7 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
                   "max_penetration_m";
   for (const auto& probe : model.probes)
     for (const char* axis : {"x", "y", "z"}) impl_->csv << "," << probe.name << "_" << axis << "_m";
-  impl_->csv << "\n";
+  impl_->csv << ",event\n";
   impl_->csv.flush();
   // A folder that reads from the start: status "running", no step yet.
   SolveSummary running;
@@ -171,7 +171,9 @@ void ResultWriter::AddStep(const StepState& step) {
   }
   for (const auto& p : step.probes)
     csv << "," << p.value.x() << "," << p.value.y() << "," << p.value.z();
-  csv << "\n";
+  // The stability event the step ends (a limit or bifurcation passed, a snap
+  // landed), blank for none.
+  csv << "," << (step.stability_event ? ToString(step.stability_event->kind) : "") << "\n";
   impl_->csv << csv.str();
   impl_->csv.flush();
   impl_->last = step;

@@ -18,6 +18,7 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
                   "max_steps",
                   "max_iterations",
                   "max_step_cuts",
+                  "max_turns",
                   "psi",
                   "branching",
                   "sequencing",
@@ -60,6 +61,7 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("max_steps", s.max_steps, 1);
   count("max_iterations", s.max_iterations, 1);
   count("max_step_cuts", s.max_step_cuts, 0);
+  count("max_turns", s.max_turns, 0);
   count("sequencing", s.sequencing, 1);
   if (auto a = c.Find("acceleration")) s.acceleration = a->Boolean();
   if (auto e = c.Find("error_estimate")) s.error_estimate = e->Boolean();

@@ -187,6 +187,7 @@ json ToJson(const SolverSettings& s) {
                 {"max_steps", s.max_steps},
                 {"max_iterations", s.max_iterations},
                 {"max_step_cuts", s.max_step_cuts},
+                {"max_turns", s.max_turns},
                 {"branching", ToString(s.branching)}});
   if (s.psi) j["psi"] = *s.psi;
   if (s.sequencing > 1) j["sequencing"] = s.sequencing;

@@ -290,6 +290,9 @@ struct SolverSettings {
   int max_steps = 5000;
   int max_iterations = 30;
   int max_step_cuts = 10;
+  // Limit points a stage's path may pass (λ turning back) before it fails:
+  // under `fundamental` a path can turn back and forth for minutes.
+  int max_turns = 20;
   std::optional<double> psi;  // [m]; default: a characteristic length of the part
   Branching branching = Branching::kStable;
   // > 1: follow the path on the mesh this many times coarser in each

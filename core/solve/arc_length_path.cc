@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/continuation/step_policy.h"
+#include "core/model/string_format.h"
 #include "core/solve/bifurcation_passage.h"
 #include "core/solve/converged_step.h"
 #include "core/solve/run_diagnostics.h"
@@ -19,6 +20,18 @@ namespace {
 // hold the shell on its path); a path that runs back past this does not come
 // back to the stage's end.
 constexpr double kLowestLambda = -1.0;
+
+StageOutcome TurnsTooOften(const Stage& spec, int index, int turns, double lambda) {
+  return StageOutcome::Stop(
+      Termination::kStepTooSmall,
+      Format("stage '%s' (stages[%d]): the path turned back %d times (solver.max_turns) and is at "
+             "λ = %.6g: between its limit points a real part snaps, and this path goes back and "
+             "forth instead; solver.branching: stable takes the snaps, or allow more turns",
+             spec.name.c_str(),
+             index,
+             turns,
+             lambda));
+}
 
 StageOutcome RunsBackTooFar(const Stage& spec, int index) {
   return StageOutcome::Stop(Termination::kStepTooSmall,
@@ -38,6 +51,7 @@ struct PathPosition {
   std::optional<PathDirection> previous;
   double last_landing = NAN;  // λ where the last branch switch landed
   double lowest = 0;          // the smallest λ the path reached
+  int turns = 0;              // limit points passed
 
   // After a jump the path starts afresh where the part landed, its first
   // step sized from Δλ₀.
@@ -76,8 +90,15 @@ StageOutcome RunArcLength(SolveRun& run,
       at.max_arc_length = step.arc_length * options.max_increment / spec.initial_increment;
     if (step.status != NewtonOutcome::Status::kConverged) {
       run.state = saved;
-      if (StageOutcome o = CutBack(run, step, spec, at.lambda, cuts_in_a_row, stage); !o.GoesOn())
-        return o;
+      if (StageOutcome o = CutBack(run, step, spec, at.lambda, cuts_in_a_row, stage); !o.GoesOn()) {
+        if (!CanSnapFromStart(run, stage, at.lambda, o)) return o;
+        PathPoint landed;
+        if (StageOutcome s = SnapFromStart(run, index, loading, o, stage, landed); !s.GoesOn())
+          return s;
+        at.GoOnAfterSnap(landed.lambda);
+        cuts_in_a_row = 0;
+        continue;
+      }
       at.arc_length = 0.5 * step.arc_length;
       continue;
     }
@@ -97,6 +118,8 @@ StageOutcome RunArcLength(SolveRun& run,
       at.GoOnAfterSnap(landed.lambda);
       continue;
     }
+    if (event && event->kind == StabilityKind::kLimit && ++at.turns > options.max_turns)
+      return TurnsTooOften(spec, index, at.turns, step.lambda);
     if (event && SwitchesAt(run, *event, step)) {
       PathPoint branch;
       if (StageOutcome o =

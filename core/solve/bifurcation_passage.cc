@@ -95,7 +95,7 @@ StageOutcome PassBifurcation(SolveRun& run,
     SnapStart start{sw.bifurcation ? *sw.bifurcation : crossing.start,
                     sw.past.state,
                     sw.past.lambda,
-                    StabilityKind::kBifurcation,
+                    SnapTrigger::kBifurcation,
                     sw.negative_pivots_fundamental};
     const bool against =
         settings.imperfection.size() == sw.mode.size() && sw.mode.dot(settings.imperfection) < 0;

@@ -6,6 +6,7 @@
 #include "core/continuation/step_policy.h"
 #include "core/solve/bifurcation_passage.h"
 #include "core/solve/converged_step.h"
+#include "core/solve/snap_passage.h"
 #include "core/solve/stage_runner.h"
 
 namespace drape {
@@ -42,8 +43,16 @@ StageOutcome RunLoadControl(SolveRun& run,
     run.CountIterations(step.iterations, stage);
     if (step.status != NewtonOutcome::Status::kConverged) {
       run.state = saved;
-      if (StageOutcome o = CutBack(run, step, spec, lambda, cuts_in_a_row, stage); !o.GoesOn())
-        return o;
+      if (StageOutcome o = CutBack(run, step, spec, lambda, cuts_in_a_row, stage); !o.GoesOn()) {
+        if (!CanSnapFromStart(run, stage, lambda, o)) return o;
+        PathPoint landed;
+        if (StageOutcome s = SnapFromStart(run, index, loading, o, stage, landed); !s.GoesOn())
+          return s;
+        lambda = landed.lambda;
+        increment = spec.initial_increment;
+        cuts_in_a_row = 0;
+        continue;
+      }
       increment /= 2;
       continue;
     }

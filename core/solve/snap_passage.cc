@@ -86,11 +86,14 @@ StageOutcome RecordSnap(SolveRun& run,
   if (newton.status != NewtonOutcome::Status::kConverged)
     return StageOutcome::Stop(
         Termination::kNoStableBranch,
-        Format("stage '%s' (stages[%d]): past a %s point at λ = %.6g the part snaps, but no "
-               "rest state was found for it to land in: ",
+        Format("stage '%s' (stages[%d]): %s at λ = %.6g the part snaps, but no rest state was "
+               "found for it to land in: ",
                name.c_str(),
                index,
-               ToString(start.trigger),
+               start.trigger == SnapTrigger::kStart
+                   ? "where it starts it cannot carry its first increment, so"
+                   : (start.trigger == SnapTrigger::kLimit ? "past a limit point"
+                                                           : "past a bifurcation point"),
                start.lambda) +
             newton.reason + ". solver.branching: fundamental follows the unstable path instead" +
             ContactHint(run));
@@ -136,6 +139,33 @@ StageOutcome Snap(SolveRun& run,
   return RecordSnap(run, index, loading, start, jump, record_before, stage, landed);
 }
 
+bool CanSnapFromStart(const SolveRun& run,
+                      const StageSummary& stage,
+                      double lambda,
+                      const StageOutcome& stuck) {
+  return stuck.termination == Termination::kStepTooSmall && stage.steps == 0 && lambda == 0 &&
+         run.options.branching == Branching::kStable;
+}
+
+StageOutcome SnapFromStart(SolveRun& run,
+                           int index,
+                           const StageLoading& loading,
+                           const StageOutcome& stuck,
+                           StageSummary& stage,
+                           PathPoint& landed) {
+  const double lambda = std::min(1.0, run.scene.stages[index].initial_increment);
+  const SnapStart start{PathPoint{run.state, 0.0, {}}, run.state, lambda, SnapTrigger::kStart, 0};
+  const Jump jump = JumpFrom(run, loading, start);
+  if (jump.outcome.newton.status != NewtonOutcome::Status::kConverged &&
+      jump.outcome.newton.status != NewtonOutcome::Status::kCancelled) {
+    run.CountIterations(jump.outcome.newton.iterations, stage);
+    return StageOutcome::Stop(stuck.termination,
+                              stuck.message + "; nor does it come to rest at λ = " +
+                                  Format("%.6g", lambda) + " (" + jump.outcome.newton.reason + ")");
+  }
+  return RecordSnap(run, index, loading, start, jump, /*record_before=*/false, stage, landed);
+}
+
 StageOutcome SnapAtLimit(SolveRun& run,
                          int index,
                          const StageLoading& loading,
@@ -162,7 +192,7 @@ StageOutcome SnapAtLimit(SolveRun& run,
   // Falling back onto the fold's stable state moves the part by about the
   // bracket's own width; a jump goes much further.
   const double fell_back = 10 * LargestTranslation(b.lo.state, b.hi.state);
-  SnapStart start{b.lo, b.hi.state, limit, StabilityKind::kLimit, b.hi.step.negative_pivots};
+  SnapStart start{b.lo, b.hi.state, limit, SnapTrigger::kLimit, b.hi.step.negative_pivots};
   Jump jump;
   bool jumped = false;
   for (int k = 0; k < kLimitTries && !jumped; ++k) {

@@ -28,7 +28,7 @@ struct SnapStart {
   PathPoint before;
   ShellState pushed;
   double lambda = 0;
-  StabilityKind trigger = StabilityKind::kLimit;
+  SnapTrigger trigger = SnapTrigger::kLimit;
   int pivots_past = 0;  // on the path just past the point
 };
 
@@ -53,5 +53,23 @@ StageOutcome SnapAtLimit(SolveRun& run,
                          const Crossing& crossing,
                          StageSummary& stage,
                          PathPoint& landed);
+
+// Whether a stage stuck at its start can snap: under `stable` branching, its
+// first step cut back until it gave up (`stuck`), nothing converged yet.
+bool CanSnapFromStart(const SolveRun& run,
+                      const StageSummary& stage,
+                      double lambda,
+                      const StageOutcome& stuck);
+
+// A part that cannot carry the first increment where it starts (a mechanism:
+// held at two corners, it swings about the line through them) falls to the
+// rest state at that increment's λ. On failure, `stuck`'s stop with what the
+// minimiser found added.
+StageOutcome SnapFromStart(SolveRun& run,
+                           int index,
+                           const StageLoading& loading,
+                           const StageOutcome& stuck,
+                           StageSummary& stage,
+                           PathPoint& landed);
 
 }  // namespace drape

@@ -39,13 +39,15 @@ std::string Describe(const StabilityEvent& e) {
   if (e.kind == StabilityKind::kSnap) {
     std::snprintf(line,
                   sizeof line,
-                  "snap at stage %d step %d, lambda %.6g: past a %s point (negative pivots %d -> "
-                  "%d) the part jumped to a stable rest state, releasing %.3g J, largest "
-                  "displacement %.3g m; %d iterations, %.3f s",
+                  "snap at stage %d step %d, lambda %.6g: at a %s (negative pivots %d -> %d) the "
+                  "part jumped to a stable rest state, releasing %.3g J, largest displacement "
+                  "%.3g m; %d iterations, %.3f s",
                   e.stage,
                   e.step,
                   e.lambda,
-                  ToString(e.trigger),
+                  e.trigger == SnapTrigger::kStart
+                      ? "stage's start"
+                      : (e.trigger == SnapTrigger::kLimit ? "limit point" : "bifurcation"),
                   e.negative_pivots_before,
                   e.negative_pivots_fundamental,
                   e.energy_released,

@@ -27,6 +27,7 @@ SolverOptions SolverOptions::FromScene(const SolverSettings& settings) {
   o.max_steps = settings.max_steps;
   o.max_iterations = settings.max_iterations;
   o.max_step_cuts = settings.max_step_cuts;
+  o.max_turns = settings.max_turns;
   o.psi = settings.psi.value_or(0.0);
   o.branching = settings.branching;
   o.sequencing = settings.sequencing;
@@ -66,6 +67,7 @@ bool SolverOptions::IsValid(std::string* error) const {
          Check(
              max_iterations >= 1, "max_iterations", max_iterations, "max_iterations >= 1", error) &&
          Check(max_step_cuts >= 0, "max_step_cuts", max_step_cuts, "max_step_cuts >= 0", error) &&
+         Check(max_turns >= 0, "max_turns", max_turns, "max_turns >= 0", error) &&
          Check(divergence_ratio > 1,
                "divergence_ratio",
                divergence_ratio,

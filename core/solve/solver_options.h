@@ -34,6 +34,8 @@ struct SolverOptions {
   int max_iterations = 30;
   // Successive cut-backs (halving) of one step before the stage fails.
   int max_step_cuts = 10;
+  // Limit points one stage's path may pass before it fails (kStepTooSmall).
+  int max_turns = 20;
   // ‖R‖/‖R₀‖ above this in any iteration counts as divergence (cut back).
   double divergence_ratio = 1e6;
   // ψ [m]: weight of λ against lengths in the arc-length constraint; 0 uses

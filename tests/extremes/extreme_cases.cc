@@ -286,7 +286,9 @@ std::vector<ExtremeCase> AllCases() {
                              Ends::kFailed,
                              {"frictionless", "contact.friction"})));
   // With friction it holds, but must wrinkle over the neck: the flat sheet's
-  // path bifurcates into five modes at once with no stable branch.
+  // path bifurcates into five modes at once with no stable branch. It snaps
+  // (12.6 cm, 865 iterations), and the regularised friction then diverges on
+  // the next step (issue 35 replaces it).
   cases.push_back(Slow(Stops("sheet_resting_on_dress_form_with_friction",
                              [=](const fs::path&) {
                                Scene scene = on_dress_form(0.5, 0.5, 25, 25);
@@ -294,7 +296,7 @@ std::vector<ExtremeCase> AllCases() {
                                return scene;
                              },
                              Ends::kFailed,
-                             {"bifurcates", "solver.branching"})));
+                             {"1 snap", "solver.branching"})));
   // The scarf (resources/scenes/dress-form-drape.json) with a penalty ten
   // times the automatic one.
   cases.push_back(Stops("scarf_with_stiff_penalty",

@@ -96,6 +96,7 @@ struct RoofSpec {
   double increment = 0.03;    // Δλ of the first step; later steps keep its arc length
   Branching branching = Branching::kStable;
   double tolerance = 0;  // solver.tolerance on ‖R‖/‖R₀‖ (0: the default)
+  int max_turns = 20;    // solver.max_turns
 };
 
 // The roof with both straight edges (x = ±R sin θ) hinged, the curved edges
@@ -132,6 +133,7 @@ inline Scene RoofScene(const RoofSpec& spec) {
   scene.probes.push_back({"C", {0.0, 0.0}});
   scene.solver.branching = spec.branching;
   if (spec.tolerance > 0) scene.solver.tolerance = spec.tolerance;
+  scene.solver.max_turns = spec.max_turns;
   return scene;
 }
 

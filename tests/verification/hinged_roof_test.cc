@@ -214,6 +214,12 @@ TEST(HingedRoof, ThinRoofSnapsBackUnderPointLoad) {
   EXPECT_GT(limits[0], 0);
   EXPECT_LT(limits[1], 0);
   ASSERT_FALSE(run.summary.stability_events.empty());
+  // Its end is reached only through a reversed load (P < 0), where a real
+  // roof jumps: the run warns of it.
+  bool warned = false;
+  for (const auto& w : run.summary.warnings)
+    warned |= w.find("only after its path ran back to λ = ") != std::string::npos;
+  EXPECT_TRUE(warned);
   CompareWithReference(kReferenceThin, fe, 0.05);
   CompareTurns(kReferenceThin, fe, /*turning_w=*/true, 0.02, 0.015);
 }
@@ -304,7 +310,7 @@ TEST(HingedRoof, ThickRoofUnderLoadSnapsThroughAtItsLimitLoad) {
   spec.increment = 0.03;
   spec.tolerance = 1e-10;
   const Landing l = SnapAndCompare(spec);
-  EXPECT_EQ(l.snap.trigger, StabilityKind::kLimit);
+  EXPECT_EQ(l.snap.trigger, SnapTrigger::kLimit);
   EXPECT_GT(l.snap.energy_released, 0);
   const double reference = Turns(kReferenceThick, false).front();
   const double load = l.snap.lambda * spec.load / kPmax;
@@ -318,6 +324,31 @@ TEST(HingedRoof, ThickRoofUnderLoadSnapsThroughAtItsLimitLoad) {
       difference);
   EXPECT_NEAR(load, reference, 0.02 * reference);
   EXPECT_LE(difference, 1e-6);
+}
+
+// `solver.max_turns` bounds the limit points a path may pass: the thick
+// roof's fundamental path passes two (P's maximum and minimum), so with one
+// allowed it fails at the step past the second, naming the key. The steps
+// kept pass the first and end on the falling branch, the last of them one
+// step (measured 8.6 % of the load) above the reference's minimum.
+TEST(HingedRoof, APathThatTurnsMoreOftenThanAllowedFailsNamingTheKey) {
+  RoofSpec spec;
+  spec.thickness = 12.7;
+  spec.load = 1.1 * kPmax;
+  spec.increment = 0.03;
+  spec.branching = Branching::kFundamental;
+  spec.max_turns = 1;
+  const RoofRun run = RunRoof(spec);
+  EXPECT_EQ(run.summary.termination, Termination::kStepTooSmall);
+  EXPECT_NE(run.summary.message.find("turned back 2 times (solver.max_turns)"), std::string::npos)
+      << run.summary.message;
+  EXPECT_NE(run.summary.message.find("stages[0]"), std::string::npos) << run.summary.message;
+  const double minimum = Turns(kReferenceThick, false).back();
+  const double p = run.path.back().at.p;
+  std::printf("stopped after P = %.4f Pmax (reference minimum %.4f)\n", p, minimum);
+  EXPECT_EQ(Turns(Curve(run.path), false).size(), 1u);
+  EXPECT_GT(p, minimum);
+  EXPECT_LT(p, 1.15 * minimum);
 }
 
 // The thin roof's symmetric path bifurcates before its limit point: at
@@ -334,7 +365,7 @@ TEST(HingedRoof, ThinRoofUnderLoadSnapsAtItsSubcriticalBifurcation) {
   spec.increment = 0.01;
   spec.tolerance = 1e-10;
   const Landing l = SnapAndCompare(spec);
-  EXPECT_EQ(l.snap.trigger, StabilityKind::kBifurcation);
+  EXPECT_EQ(l.snap.trigger, SnapTrigger::kBifurcation);
   const double load = l.snap.lambda * spec.load / kPmax;
   const double difference = LargestDifference(l.state, l.expected) / Span();
   std::printf(

@@ -27,10 +27,16 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   bifurcations_->setName("bifurcation");
   bifurcations_->setMarkerSize(10);
   bifurcations_->setColor(QColor(200, 30, 30));
+  snaps_ = new QScatterSeries;
+  snaps_->setName("snap");
+  snaps_->setMarkerShape(QScatterSeries::MarkerShapeTriangle);
+  snaps_->setMarkerSize(11);
+  snaps_->setColor(QColor(120, 40, 170));
   chart->addSeries(lambda_);
   chart->addSeries(iterations_);
   chart->addSeries(limits_);
   chart->addSeries(bifurcations_);
+  chart->addSeries(snaps_);
   steps_axis_ = new QValueAxis;
   steps_axis_->setTitleText("step");
   steps_axis_->setLabelFormat("%d");
@@ -45,7 +51,8 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   chart->addAxis(iterations_axis_, Qt::AlignRight);
   for (QAbstractSeries* s : {static_cast<QAbstractSeries*>(lambda_),
                              static_cast<QAbstractSeries*>(limits_),
-                             static_cast<QAbstractSeries*>(bifurcations_)}) {
+                             static_cast<QAbstractSeries*>(bifurcations_),
+                             static_cast<QAbstractSeries*>(snaps_)}) {
     s->attachAxis(steps_axis_);
     s->attachAxis(lambda_axis_);
   }
@@ -62,6 +69,7 @@ void RunPlot::clear() {
   iterations_->clear();
   limits_->clear();
   bifurcations_->clear();
+  snaps_->clear();
   max_iterations_ = 1;
   steps_axis_->setRange(0, 10);
   iterations_axis_->setRange(0, 10);
@@ -70,9 +78,7 @@ void RunPlot::clear() {
 void RunPlot::add(const StepState& step) {
   lambda_->append(step.step, step.lambda);
   iterations_->append(step.step, step.iterations);
-  if (step.stability_event)
-    (step.stability_event->kind == StabilityKind::kLimit ? limits_ : bifurcations_)
-        ->append(step.step, step.lambda);
+  if (step.stability_event) SeriesOf(step.stability_event->kind)->append(step.step, step.lambda);
   max_iterations_ = std::max(max_iterations_, step.iterations);
   steps_axis_->setRange(0, std::max(10, step.step));
   iterations_axis_->setRange(0, std::max(10, max_iterations_));
@@ -83,7 +89,19 @@ int RunPlot::points() const {
 }
 
 int RunPlot::stabilityMarks() const {
-  return static_cast<int>(limits_->count() + bifurcations_->count());
+  return static_cast<int>(limits_->count() + bifurcations_->count() + snaps_->count());
+}
+
+QScatterSeries* RunPlot::SeriesOf(StabilityKind kind) const {
+  switch (kind) {
+    case StabilityKind::kLimit:
+      return limits_;
+    case StabilityKind::kBifurcation:
+      return bifurcations_;
+    case StabilityKind::kSnap:
+      return snaps_;
+  }
+  return bifurcations_;
 }
 
 }  // namespace drape

@@ -1,0 +1,113 @@
+// `drape run` on a part that snaps: a 10 × 10 cm sheet picked up by two
+// adjacent corners (pinned: free to turn) and loaded by its weight. Flat, it
+// is a mechanism — it swings about the line through the corners, which its
+// flat tangent cannot carry — so the stage's first step cannot start; under
+// `stable` branching the sheet falls, at the first increment's λ, to where
+// it hangs, and the path goes on from there.
+//
+// Independent answers: hanging, the sheet's free edge is a side length below
+// the corners (its membrane strain under 1.5 N/m² is ~1e-4 of that); the
+// jump lowers its centre of mass by half a side length, so the energy
+// released is λ w A L/2 (w the areal weight, A the area, L the side), less
+// the strain energy it stores (same order as the strain: 1e-4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "support/csv_file.h"
+#include "support/finite_outputs.h"
+#include "support/run_cli.h"
+#include "support/temp_dir.h"
+
+namespace drape {
+namespace {
+
+using nlohmann::json;
+using test::TempDir;
+using test::run_cli::Quote;
+using test::run_cli::ReadJson;
+using test::run_cli::RunCommand;
+using test::run_cli::WriteJson;
+
+constexpr double kSide = 0.1;       // [m]
+constexpr double kWeight = 1.5;     // [N/m²]
+constexpr double kIncrement = 0.1;  // Δλ₀: where the sheet falls
+
+json PickedUpSheet() {
+  return {{"drape_scene", 1},
+          {"name", "sheet picked up by two corners"},
+          {"fabric",
+           {{"outline", {{"rectangle", {{"size", {"10 cm", "10 cm"}}, {"center", {0, 0}}}}}},
+            {"mesh", {{"elements", {10, 10}}}}}},
+          {"material",
+           {{"thickness", "0.5 mm"},
+            {"areal_weight", kWeight},
+            {"youngs_modulus", "2 MPa"},
+            {"poisson_ratio", 0.3}}},
+          {"grippers",
+           {{{"name", "left"}, {"select", {{"point", {"-5 cm", "5 cm"}}}}, {"hold", "position"}},
+            {{"name", "right"}, {"select", {{"point", {"5 cm", "5 cm"}}}}, {"hold", "position"}}}},
+          {"probes", {{{"name", "free"}, {"at", {0, "-5 cm"}}}}},
+          {"stages", {{{"name", "hang"}, {"kind", "gravity"}, {"initial_increment", kIncrement}}}}};
+}
+
+TEST(RunCliSnap, ASheetPickedUpByTwoCornersFallsToWhereItHangs) {
+  TempDir dir("picked-up");
+  const auto scene = WriteJson(PickedUpSheet(), dir / "scene.json");
+  const test::CommandResult r =
+      test::run_cli::RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const json result = ReadJson(dir / "out" / "result.json");
+  std::vector<std::string> nulls;
+  test::CollectNulls(result, "", nulls);
+  EXPECT_TRUE(nulls.empty()) << nulls.front();
+  EXPECT_EQ(result["status"], "converged");
+
+  // One snap, from the stage's start, at the first increment.
+  ASSERT_EQ(result["stability_events"].size(), 1u) << result["stability_events"].dump();
+  const json& snap = result["stability_events"][0];
+  EXPECT_EQ(snap["kind"], "snap");
+  EXPECT_EQ(snap["trigger"], "start");
+  EXPECT_EQ(snap["step"], 1);
+  EXPECT_DOUBLE_EQ(snap["lambda"].get<double>(), kIncrement);
+  EXPECT_EQ(snap["negative_pivots_after"], 0);
+  const double released = kIncrement * kWeight * kSide * kSide * kSide / 2;
+  EXPECT_NEAR(snap["energy_released"].get<double>(), released, 1e-3 * released);
+  // The corner opposite a gripper swings from 0.1 m beside it to 0.1 m below:
+  // √2 · 0.1 m.
+  EXPECT_NEAR(snap["max_displacement"].get<double>(), std::sqrt(2.0) * kSide, 1e-3 * kSide);
+  EXPECT_GT(snap["iterations"].get<int>(), 0);
+  EXPECT_GE(snap["time_s"].get<double>(), 0);
+
+  // Every step stable and hanging; the free edge a side length below.
+  for (const json& step : result["steps"]) EXPECT_EQ(step["negative_pivots"], 0);
+  const auto rows = test::ReadCsv(dir / "out" / "steps.csv");
+  ASSERT_GE(rows.size(), 3u);
+  const size_t event = test::Column(rows[0], "event");
+  const size_t free_z = test::Column(rows[0], "free_z_m");
+  EXPECT_EQ(rows[1][event], "snap");
+  for (size_t i = 2; i < rows.size(); ++i) EXPECT_EQ(rows[i][event], "") << "row " << i;
+  EXPECT_NEAR(std::stod(rows.back()[free_z]), -kSide, 1e-3 * kSide);
+}
+
+// Under `fundamental` the path is the paper's: no jumps, and a sheet that
+// cannot start fails, saying where it starts it barely resists its load.
+TEST(RunCliSnap, UnderFundamentalBranchingTheSameSheetDoesNotSnap) {
+  TempDir dir("picked-up-fundamental");
+  json doc = PickedUpSheet();
+  doc["solver"] = {{"branching", "fundamental"}};
+  const auto scene = WriteJson(doc, dir / "scene.json");
+  const test::CommandResult r =
+      test::run_cli::RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const json result = ReadJson(dir / "out" / "result.json");
+  EXPECT_EQ(result["stability_events"].size(), 0u);
+  EXPECT_NE(result["message"].get<std::string>().find("barely resists"), std::string::npos)
+      << result["message"];
+}
+
+}  // namespace
+}  // namespace drape
