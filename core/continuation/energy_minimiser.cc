@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/linalg/critical_modes.h"
 
 namespace drape {
@@ -13,36 +15,50 @@ namespace {
 // one that needs more than kSlowStep makes it rise.
 constexpr int kQuickStep = 5;
 constexpr int kSlowStep = 8;
-constexpr int kStepIterations = 12;  // corrections a step may take
+constexpr int kStepIterations = 8;  // corrections a step may take
+// After a refused step μ falls again only after this many quick steps in a
+// row: halving straight back to where the step failed refuses every other.
+constexpr int kQuickStepsToFall = 2;
 constexpr double kDragFactor = 2;
 // A step's corrector converges when its residual is this fraction of the
 // true residual it started from: the next step goes on from there.
 constexpr double kStepTolerance = 1e-3;
 
-// D: |diag K| on the free translations (floored, so that a DOF the tangent
-// barely sees still feels the drag), 0 on the rotations.
+// D = |diag K| over the free DOFs, floored (per kind: translations and
+// rotations) so that a DOF the tangent barely sees still feels the drag.
+// On the rotations too: a state far from equilibrium can be unstable in its
+// rotations alone, with every translation held.
 Eigen::VectorXd DragScale(const EquilibriumSystem& system) {
   const DofMap& dofs = system.dofs();
-  const Eigen::VectorXd diagonal = system.TangentDiagonal().cwiseAbs();
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs.FreeCount());
+  Eigen::VectorXd d = system.TangentDiagonal().cwiseAbs();
+  double largest[2] = {0, 0};
   for (int dof = 0; dof < dofs.DofCount(); ++dof)
-    if (const int f = dofs.Free(dof); f >= 0 && dof % kDofsPerNode < 3) d(f) = diagonal(f);
-  const double floor = 1e-12 * std::max(d.maxCoeff(), 1e-300);
+    if (const int f = dofs.Free(dof); f >= 0) {
+      double& l = largest[dof % kDofsPerNode < 3 ? 0 : 1];
+      l = std::max(l, d(f));
+    }
   for (int dof = 0; dof < dofs.DofCount(); ++dof)
-    if (const int f = dofs.Free(dof); f >= 0 && dof % kDofsPerNode < 3)
-      d(f) = std::max(d(f), floor);
+    if (const int f = dofs.Free(dof); f >= 0)
+      d(f) = std::max(d(f), 1e-12 * std::max(largest[dof % kDofsPerNode < 3 ? 0 : 1], 1e-300));
   return d;
 }
 
-// x − x₀ on the free translations, 0 on the rotations.
-Eigen::VectorXd TranslationOffset(const DofMap& dofs,
-                                  const ShellState& from,
-                                  const ShellState& to) {
+// Where `to` is from `from` over the free DOFs: the translations' difference,
+// and each node's rotation from one to the other (the rotation vector of
+// Λ_to Λ_fromᵀ) on `to`'s tangent basis.
+Eigen::VectorXd Offset(const DofMap& dofs, const ShellState& from, const ShellState& to) {
   Eigen::VectorXd offset = Eigen::VectorXd::Zero(dofs.FreeCount());
-  for (int node = 0; node < from.positions.rows(); ++node)
+  for (int node = 0; node < from.positions.rows(); ++node) {
     for (int a = 0; a < 3; ++a)
       if (const int f = dofs.Free(kDofsPerNode * node + a); f >= 0)
         offset(f) = to.positions(node, a) - from.positions(node, a);
+    const Eigen::AngleAxisd turn(
+        Eigen::Matrix3d(to.rotations[node] * from.rotations[node].transpose()));
+    const Eigen::Vector3d w = turn.angle() * turn.axis();
+    for (int a = 0; a < 2; ++a)
+      if (const int f = dofs.Free(kDofsPerNode * node + 3 + a); f >= 0)
+        offset(f) = w.dot(to.rotations[node].col(a));
+  }
   return offset;
 }
 
@@ -68,15 +84,21 @@ ProximalStepResult ProximalStep(EquilibriumSystem& system,
   request.settings.tolerance = kStepTolerance;
   request.settings.relative_to_force_level = false;
   request.settings.max_iterations = kStepIterations;
+  // Only the iteration limit ends a step early: with much drag its
+  // corrections are small by design.
+  request.settings.stall_correction = 0;
   request.assemble = [&](const ShellState& s, int iteration) {
     system.Assemble(s, /*with_tangent=*/true);
     Eigen::VectorXd r = system.Residual(external(s));
     if (iteration == 0) reference = r.norm();
+    // The floor of K's own round-off, not of K + μD's, whose shift would
+    // make any residual look like round-off.
+    const double round_off = system.RoundOffLevel(s);
     if (mu > 0) {
-      r += mu * drag_scale.cwiseProduct(TranslationOffset(system.dofs(), start, s));
+      r += mu * drag_scale.cwiseProduct(Offset(system.dofs(), start, s));
       system.ShiftTangentDiagonal(mu * drag_scale);
     }
-    return CorrectorRequest::Residual{std::move(r), reference};
+    return CorrectorRequest::Residual{std::move(r), reference, round_off};
   };
   request.correct = [&](const Eigen::VectorXd& r, ShellState& s) {
     return ApplyNewtonCorrection(system, r, s);
@@ -141,6 +163,8 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
   NewtonOutcome& result = out.newton;
   const NewtonSettings& newton = settings.newton;
   double mu = settings.initial_drag;
+  int quick_in_a_row = kQuickStepsToFall;
+  std::string last_refusal;
   int restarts = 0;
   Eigen::VectorXd drag_scale;
   const double energy_before = system.PotentialEnergy(state, external(state));
@@ -171,9 +195,9 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
                         std::to_string(out.steps) +
                         " steps; ‖R‖/‖R₀‖ = " + Number(result.residuals.back()) + ")");
     if (mu > settings.largest_drag)
-      return finish(
-          NewtonOutcome::Status::kDiverged,
-          "no step lowers the energy (drag μ above " + Number(settings.largest_drag) + ")");
+      return finish(NewtonOutcome::Status::kDiverged,
+                    "no step converged however much drag held it (μ up to " +
+                        Number(settings.largest_drag) + "; the last: " + last_refusal + ")");
     const ProximalStepResult step =
         ProximalStep(system, external, newton, drag_scale, mu, state, cancel);
     result.iterations += step.newton.iterations;
@@ -181,14 +205,18 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
       return finish(step.newton.status, step.newton.reason);
     if (!step.accepted) {
       ++out.refused_steps;
+      last_refusal = step.newton.reason.empty() ? "negative pivots" : step.newton.reason;
       mu = kDragFactor * std::max(mu, settings.smallest_drag);
+      quick_in_a_row = 0;
       continue;
     }
     ++out.steps;
-    if (step.newton.iterations <= kQuickStep)
-      mu = mu / kDragFactor < settings.smallest_drag ? 0.0 : mu / kDragFactor;
-    else if (step.newton.iterations > kSlowStep)
+    if (step.newton.iterations > kSlowStep) {
       mu = kDragFactor * std::max(mu, settings.smallest_drag);
+      quick_in_a_row = 0;
+    } else if (step.newton.iterations <= kQuickStep && ++quick_in_a_row >= kQuickStepsToFall) {
+      mu = mu / kDragFactor < settings.smallest_drag ? 0.0 : mu / kDragFactor;
+    }
   }
 }
 

@@ -5,7 +5,8 @@
 // A proximal-point iteration (implicit gradient flow, or pseudo-transient
 // continuation solved exactly per step): each step finds
 //   q₊ = argmin Π(q) + ½ μ (x − xₙ)ᵀ D (x − xₙ),
-// D = |diag K| on the translations (so μ is dimensionless), by the Newton
+// D = |diag K| (so μ is dimensionless; x − xₙ: the translations' difference
+// and each node's rotation from Λₙ, on its tangent basis), by the Newton
 // corrector that also serves the path (newton_corrector.h) on the residual
 // R(q) + μD(x − xₙ) and the tangent K + μD. The term is a viscous drag on
 // the nodes: it makes the tangent definite where K is not (past a limit

@@ -99,14 +99,15 @@ NewtonOutcome RunCorrector(EquilibriumSystem& system,
       return out;
     }
     const CorrectorRequest::Residual r = request.assemble(state, it);
-    IterationVerdict v = JudgeIteration(request.settings,
-                                        r.free.norm(),
-                                        r.reference,
-                                        system.RoundOffLevel(state),
-                                        last_correction,
-                                        it,
-                                        out.residuals,
-                                        out.convergence);
+    IterationVerdict v =
+        JudgeIteration(request.settings,
+                       r.free.norm(),
+                       r.reference,
+                       r.round_off >= 0 ? r.round_off : system.RoundOffLevel(state),
+                       last_correction,
+                       it,
+                       out.residuals,
+                       out.convergence);
     if (v.done && v.status == NewtonOutcome::Status::kConverged)
       if (std::string why = Refusal(system, state, request); !why.empty())
         v = {true, NewtonOutcome::Status::kDiverged, std::move(why)};

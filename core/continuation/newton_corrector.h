@@ -114,6 +114,10 @@ struct CorrectorRequest {
   struct Residual {
     Eigen::VectorXd free;  // R over the free DOFs
     double reference = 0;
+    // The residual's round-off level [N] when the caller knows it better
+    // than the system's last assembled tangent does (a shifted tangent);
+    // negative: EquilibriumSystem::RoundOffLevel.
+    double round_off = -1;
   };
   // Assembles the system (tangent included) at `state`; `iteration` counts
   // from 0.

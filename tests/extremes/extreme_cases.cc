@@ -178,7 +178,10 @@ std::vector<ExtremeCase> AllCases() {
                         Ends::kRefused,
                         {"material.areal_weight"}));
   // The flat strip then has (almost) no stiffness against its weight: no
-  // first step can be taken, and the message says where to look.
+  // first step can be taken. Under stable branching it snaps from its start
+  // and hangs straight down (tip at −L, as a string would); past λ = 0.068
+  // its path bifurcates and the minimiser finds no rest state to jump to (a
+  // tangent singular to round-off), and the message says so.
   cases.push_back(Stops("bending_1e-12_of_normal",
                         [](const fs::path&) {
                           Scene scene = PeirceStrip({});
@@ -187,7 +190,7 @@ std::vector<ExtremeCase> AllCases() {
                           return scene;
                         },
                         Ends::kFailed,
-                        {"barely resists", "material.bending"}));
+                        {"1 snap", "no rest state"}));
 
   // Grippers: two full turns about the strip's axis; a strip pulled to
   // three times its length; an end driven into a table.

@@ -58,27 +58,32 @@ inline const std::vector<CurvePoint> kReferenceThin = {
     {36.626, 0.8114},  {38.450, 1.0313}};
 
 // The roof's reference surface: x = R sin φ, z = R cos φ − R cos θ (edges at
-// z = 0), φ ∈ [−θ, θ] and y ∈ [−L/2, L/2] in n equal steps; quads numbered
-// counter-clockwise seen from +z, so the directors point up (outward).
-inline Mesh RoofMesh(int n) {
+// z = 0), φ ∈ [−θ, θ] in nx equal steps and y ∈ [−L/2, L/2] in ny; quads
+// numbered counter-clockwise seen from +z, so the directors point up
+// (outward).
+inline Mesh RoofMesh(int nx, int ny, double length) {
   Mesh mesh;
-  mesh.positions.resize((n + 1) * (n + 1), 3);
+  mesh.positions.resize((nx + 1) * (ny + 1), 3);
   const double base = kRadius * std::cos(kHalfAngle);
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      const double phi = -kHalfAngle + 2 * kHalfAngle * i / n;
-      mesh.positions.row(j * (n + 1) + i) << kRadius * std::sin(phi),
-          -kLength / 2 + kLength * j / n, kRadius * std::cos(phi) - base;
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      const double phi = -kHalfAngle + 2 * kHalfAngle * i / nx;
+      mesh.positions.row(j * (nx + 1) + i) << kRadius * std::sin(phi),
+          -length / 2 + length * j / ny, kRadius * std::cos(phi) - base;
     }
   }
-  mesh.quads.resize(n * n, 4);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      mesh.quads.row(j * n + i) << a, a + 1, a + n + 2, a + n + 1;
+  mesh.quads.resize(nx * ny, 4);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i;
+      mesh.quads.row(j * nx + i) << a, a + 1, a + nx + 2, a + nx + 1;
     }
   }
   return mesh;
+}
+
+inline Mesh RoofMesh(int n) {
+  return RoofMesh(n, n, kLength);
 }
 
 // Rise of the roof: the centre's height above the hinged edges.
@@ -97,7 +102,16 @@ struct RoofSpec {
   Branching branching = Branching::kStable;
   double tolerance = 0;  // solver.tolerance on ‖R‖/‖R₀‖ (0: the default)
   int max_turns = 20;    // solver.max_turns
+  // A clamped shallow arch instead: a slice `arch_width` wide along the axis
+  // (one element), both straight edges clamped, the load a line across the
+  // slice's middle (0: the roof).
+  double arch_width = 0;
 };
+
+// The mesh the spec's scene is solved on.
+inline Mesh RoofMeshOf(const RoofSpec& spec) {
+  return spec.arch_width > 0 ? RoofMesh(kElements, 1, spec.arch_width) : RoofMesh(kElements);
+}
 
 // The roof with both straight edges (x = ±R sin θ) hinged, the curved edges
 // free, and one arc-length stage driving the centre.
@@ -107,16 +121,19 @@ inline Scene RoofScene(const RoofSpec& spec) {
   // The outline is the roof's projection, so that the hinged edges' nodes lie
   // exactly on the left and right sides of its bounding box.
   const double half_width = kRadius * std::sin(kHalfAngle);
-  scene.fabric.outline = RectangleOutline{{2 * half_width, kLength}, {0.0, 0.0}};
+  const bool arch = spec.arch_width > 0;
+  scene.fabric.outline =
+      RectangleOutline{{2 * half_width, arch ? spec.arch_width : kLength}, {0.0, 0.0}};
   scene.material.thickness = spec.thickness;
   scene.material.areal_weight = 0.0;
   scene.material.membrane = IsotropicMembrane{kYoungsModulus, kPoissonRatio};
   scene.material.bending.warp = LinearBending{};
-  scene.supports.push_back(
-      {"hinge left", Selection{EdgeSelection{Side::kLeft}, {}}, Fixity::kPosition});
-  scene.supports.push_back(
-      {"hinge right", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kPosition});
-  const Selection centre{PointSelection{{0.0, 0.0}}, {}};
+  const Fixity edges = arch ? Fixity::kClamp : Fixity::kPosition;
+  scene.supports.push_back({"left", Selection{EdgeSelection{Side::kLeft}, {}}, edges});
+  scene.supports.push_back({"right", Selection{EdgeSelection{Side::kRight}, {}}, edges});
+  const Selection centre =
+      arch ? Selection{LineSelection{{0.0, -spec.arch_width / 2}, {0.0, spec.arch_width / 2}}, {}}
+           : Selection{PointSelection{{0.0, 0.0}}, {}};
   Stage stage;
   stage.name = "load";
   stage.initial_increment = spec.increment;
@@ -159,7 +176,7 @@ inline RoofRun RunRoof(const RoofSpec& spec) {
   // 2 k DOFs: one assembly thread is enough and keeps the time steady when
   // tests run in parallel.
   options.threads = 1;
-  ShellSolver solver(scene, BuildShellModel(scene, RoofMesh(kElements)), options);
+  ShellSolver solver(scene, BuildShellModel(scene, RoofMeshOf(spec)), options);
   RoofRun run;
   run.path.push_back({});
   run.summary = solver.Solve({[&](const StepState& s) {
