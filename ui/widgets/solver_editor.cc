@@ -78,13 +78,15 @@ void SolverEditor::MakeChoices(QFormLayout* form) {
       "result then has one step). Must divide the mesh's element counts");
   form->addRow("coarse path, factor", sequencing_);
   branching_ = new QComboBox(this);
-  branching_->addItem("take the stable branch", "stable");
+  branching_->addItem("take the stable branch, or snap", "stable");
   branching_->addItem("follow the primary path", "fundamental");
   branching_->setToolTip(
-      "At a bifurcation (the tangent turns indefinite while λ goes on): switch to the branch a "
-      "real part takes, or follow the primary path through it (unstable past it; the paper's "
-      "studies)");
-  form->addRow("at bifurcations", branching_);
+      "solver.branching. Where the part buckles or gives way: switch to the branch a real part "
+      "takes, or, where no stable path goes on (a limit point, a bifurcation with no stable "
+      "branch), let it snap to the rest state it falls into, as a real part does; or follow the "
+      "primary path through limit and bifurcation points (unstable between them; the paper's "
+      "load–deflection studies)");
+  form->addRow("where it buckles", branching_);
   error_estimate_ = new QCheckBox("on meshes 2 and 4 times coarser", this);
   error_estimate_->setToolTip(
       "solver.error_estimate: after a converged run, solve again on meshes 2 and 4 times coarser "

@@ -1,6 +1,6 @@
 // The solver's group of the property panel: an accuracy preset (or custom),
 // the preset's numbers each in its own field (changed by hand, the settings
-// are custom), the run's limits, what happens at bifurcations, mesh
+// are custom), the run's limits, what happens where the part buckles, mesh
 // sequencing and the error estimate.
 #pragma once
 
