@@ -110,6 +110,33 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
 
 ResultWriter::~ResultWriter() = default;
 
+namespace {
+
+// One row of steps.csv (header: ResultWriter's constructor).
+std::string StepsCsvRow(const StepState& step, bool with_contact) {
+  std::ostringstream csv;
+  csv.precision(17);
+  // Stage names are user text: quote them for CSV.
+  std::string name = step.stage_name;
+  for (size_t at = 0; (at = name.find('"', at)) != std::string::npos; at += 2)
+    name.insert(at, 1, '"');
+  csv << step.stage << ",\"" << name << "\"," << step.step << "," << step.lambda << ","
+      << step.iterations << "," << step.arc_length << "," << step.negative_pivots;
+  if (with_contact) {
+    const ContactReport c = step.contact.value_or(ContactReport{});
+    csv << "," << c.nodes << "," << c.force.x() << "," << c.force.y() << "," << c.force.z() << ","
+        << c.max_penetration;
+  }
+  for (const auto& p : step.probes)
+    csv << "," << p.value.x() << "," << p.value.y() << "," << p.value.z();
+  // The stability event the step ends (a limit or bifurcation passed, a snap
+  // landed), blank for none.
+  csv << "," << (step.stability_event ? ToString(step.stability_event->kind) : "") << "\n";
+  return csv.str();
+}
+
+}  // namespace
+
 void ResultWriter::AddStep(const StepState& step) {
   impl_->states->Append(
       {step.stage, step.step, step.lambda, step.state.positions, step.state.Directors()});
@@ -156,25 +183,7 @@ void ResultWriter::AddStep(const StepState& step) {
   impl_->steps.push_back(std::move(s));
   // One line, written whole: a process killed at any moment leaves no half
   // line behind.
-  std::ostringstream csv;
-  csv.precision(17);
-  // Stage names are user text: quote them for CSV.
-  std::string name = step.stage_name;
-  for (size_t at = 0; (at = name.find('"', at)) != std::string::npos; at += 2)
-    name.insert(at, 1, '"');
-  csv << step.stage << ",\"" << name << "\"," << step.step << "," << step.lambda << ","
-      << step.iterations << "," << step.arc_length << "," << step.negative_pivots;
-  if (impl_->contact) {
-    const ContactReport c = step.contact.value_or(ContactReport{});
-    csv << "," << c.nodes << "," << c.force.x() << "," << c.force.y() << "," << c.force.z() << ","
-        << c.max_penetration;
-  }
-  for (const auto& p : step.probes)
-    csv << "," << p.value.x() << "," << p.value.y() << "," << p.value.z();
-  // The stability event the step ends (a limit or bifurcation passed, a snap
-  // landed), blank for none.
-  csv << "," << (step.stability_event ? ToString(step.stability_event->kind) : "") << "\n";
-  impl_->csv << csv.str();
+  impl_->csv << StepsCsvRow(step, impl_->contact);
   impl_->csv.flush();
   impl_->last = step;
   impl_->has_last = true;

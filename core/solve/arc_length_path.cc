@@ -60,7 +60,46 @@ struct PathPosition {
     arc_length = 0;
     previous.reset();
   }
+
+  // From where a bifurcation's passage left the part: the first point on
+  // the branch it switched to, or where it snapped (no direction: a rest
+  // state, not a path).
+  void GoOnFromBranch(const PathPoint& branch, ArcLengthStepper& stepper) {
+    if (branch.step.direction.translation.size() == 0) return GoOnAfterSnap(branch.lambda);
+    // Landing where the last switch landed: forward from there led back to
+    // the same bifurcation (the branch bends back; the part would snap). Let
+    // the path go the way the switch pointed instead of round again.
+    if (std::abs(branch.lambda - last_landing) < 1e-6) stepper.SetDefiniteGoesForward(false);
+    last_landing = branch.lambda;
+    lambda = branch.lambda;
+    previous = branch.step.direction;
+    // Grow from the switch's own length: the branch starts near the point.
+    arc_length = std::min(branch.step.arc_length, max_arc_length);
+  }
 };
+
+// A step that did not converge (the state restored): cut back, or, for a
+// stage stuck at its start, let the part snap from there.
+StageOutcome AfterFailedStep(SolveRun& run,
+                             int index,
+                             const StageLoading& loading,
+                             const ContinuationStep& step,
+                             PathPosition& at,
+                             int& cuts_in_a_row,
+                             StageSummary& stage) {
+  const Stage& spec = run.scene.stages[index];
+  StageOutcome o = CutBack(run, step, spec, at.lambda, cuts_in_a_row, stage);
+  if (o.GoesOn()) {
+    at.arc_length = 0.5 * step.arc_length;
+    return o;
+  }
+  if (!CanSnapFromStart(run, stage, at.lambda, o)) return o;
+  PathPoint landed;
+  if (StageOutcome s = SnapFromStart(run, index, loading, o, stage, landed); !s.GoesOn()) return s;
+  at.GoOnAfterSnap(landed.lambda);
+  cuts_in_a_row = 0;
+  return StageOutcome::On();
+}
 
 }  // namespace
 
@@ -90,16 +129,9 @@ StageOutcome RunArcLength(SolveRun& run,
       at.max_arc_length = step.arc_length * options.max_increment / spec.initial_increment;
     if (step.status != NewtonOutcome::Status::kConverged) {
       run.state = saved;
-      if (StageOutcome o = CutBack(run, step, spec, at.lambda, cuts_in_a_row, stage); !o.GoesOn()) {
-        if (!CanSnapFromStart(run, stage, at.lambda, o)) return o;
-        PathPoint landed;
-        if (StageOutcome s = SnapFromStart(run, index, loading, o, stage, landed); !s.GoesOn())
-          return s;
-        at.GoOnAfterSnap(landed.lambda);
-        cuts_in_a_row = 0;
-        continue;
-      }
-      at.arc_length = 0.5 * step.arc_length;
+      if (StageOutcome o = AfterFailedStep(run, index, loading, step, at, cuts_in_a_row, stage);
+          !o.GoesOn())
+        return o;
       continue;
     }
     if (step.lambda < kLowestLambda) return RunsBackTooFar(spec, index);
@@ -126,19 +158,7 @@ StageOutcome RunArcLength(SolveRun& run,
               PassBifurcation(run, index, loading, stepper, crossing(), *event, stage, branch);
           !o.GoesOn())
         return o;
-      if (branch.step.direction.translation.size() == 0) {  // it snapped
-        at.GoOnAfterSnap(branch.lambda);
-        continue;
-      }
-      // Landing where the last switch landed: forward from there led back to
-      // the same bifurcation (the branch bends back; the part would snap).
-      // Let the path go the way the switch pointed instead of round again.
-      if (std::abs(branch.lambda - at.last_landing) < 1e-6) stepper.SetDefiniteGoesForward(false);
-      at.last_landing = branch.lambda;
-      at.lambda = branch.lambda;
-      at.previous = branch.step.direction;
-      // Grow from the switch's own length: the branch starts near the point.
-      at.arc_length = std::min(branch.step.arc_length, at.max_arc_length);
+      at.GoOnFromBranch(branch, stepper);
       continue;
     }
     at.lambda = step.landed ? 1.0 : step.lambda;

@@ -17,6 +17,29 @@ constexpr double kLocateFraction = 1e-3;
 // definite by more than round-off.
 constexpr double kSwitchAmplitude = 1e-3;
 
+// No stable branch: the part snaps, from the primary path just past the
+// point, pushed along the critical mode the way the imperfection leans.
+StageOutcome SnapAtBifurcation(SolveRun& run,
+                               int index,
+                               const StageLoading& loading,
+                               const Crossing& crossing,
+                               const BranchSwitch& sw,
+                               const BifurcationSettings& settings,
+                               StageSummary& stage,
+                               PathPoint& reached) {
+  SnapStart start{sw.bifurcation ? *sw.bifurcation : crossing.start,
+                  sw.past.state,
+                  sw.past.lambda,
+                  SnapTrigger::kBifurcation,
+                  sw.negative_pivots_fundamental};
+  const bool against =
+      settings.imperfection.size() == sw.mode.size() && sw.mode.dot(settings.imperfection) < 0;
+  Eigen::VectorXd push = run.dofs->Expand(sw.mode);
+  push *= (against ? -1 : 1) * settings.amplitude / std::max(MaxTranslation(push), 1e-300);
+  ApplyIncrement(push, start.pushed);
+  return Snap(run, index, loading, start, sw.bifurcation.has_value(), stage, reached);
+}
+
 }  // namespace
 
 BifurcationSettings PassageSettings(const SolveRun& run) {
@@ -89,21 +112,8 @@ StageOutcome PassBifurcation(SolveRun& run,
     run.state = crossing.start.state;
     return StageOutcome::Cancelled("in stage '" + name + "' at a bifurcation");
   }
-  if (!sw.switched && sw.mode.size() > 0 && run.options.branching == Branching::kStable) {
-    // No stable branch: the part snaps, from the primary path just past the
-    // point, pushed along the critical mode the way the imperfection leans.
-    SnapStart start{sw.bifurcation ? *sw.bifurcation : crossing.start,
-                    sw.past.state,
-                    sw.past.lambda,
-                    SnapTrigger::kBifurcation,
-                    sw.negative_pivots_fundamental};
-    const bool against =
-        settings.imperfection.size() == sw.mode.size() && sw.mode.dot(settings.imperfection) < 0;
-    Eigen::VectorXd push = run.dofs->Expand(sw.mode);
-    push *= (against ? -1 : 1) * settings.amplitude / std::max(MaxTranslation(push), 1e-300);
-    ApplyIncrement(push, start.pushed);
-    return Snap(run, index, loading, start, sw.bifurcation.has_value(), stage, reached);
-  }
+  if (!sw.switched && sw.mode.size() > 0 && run.options.branching == Branching::kStable)
+    return SnapAtBifurcation(run, index, loading, crossing, sw, settings, stage, reached);
   if (!sw.switched) {
     // Keep the last stable point the bisection found: the part's state just
     // before it would snap.
