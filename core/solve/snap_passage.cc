@@ -95,7 +95,10 @@ StageOutcome RecordSnap(SolveRun& run,
                    : (start.trigger == SnapTrigger::kLimit ? "past a limit point"
                                                            : "past a bifurcation point"),
                start.lambda) +
-            newton.reason + ". solver.branching: fundamental follows the unstable path instead" +
+            newton.reason +
+            (start.trigger == SnapTrigger::kStart
+                 ? ". Hold the part more (supports, grippers) or give it bending (material.bending)"
+                 : ". solver.branching: fundamental follows the unstable path instead") +
             ContactHint(run));
   StabilityEvent event;
   event.kind = StabilityKind::kSnap;

@@ -178,10 +178,12 @@ std::vector<ExtremeCase> AllCases() {
                         Ends::kRefused,
                         {"material.areal_weight"}));
   // The flat strip then has (almost) no stiffness against its weight: no
-  // first step can be taken. Under stable branching it snaps from its start
-  // and hangs straight down (tip at −L, as a string would); past λ = 0.068
-  // its path bifurcates and the minimiser finds no rest state to jump to (a
-  // tangent singular to round-off), and the message says so.
+  // first step can be taken, and its tangent is singular to round-off, so
+  // what the minimiser makes of it depends on the build's rounding. Under
+  // stable branching the release build snaps from its start and hangs
+  // straight down (tip at −L, as a string would), then past λ = 0.068 finds
+  // no rest state to jump to; the sanitized build finds none from the start
+  // ("barely resists its load … nor does it come to rest"). Both say so.
   cases.push_back(Stops("bending_1e-12_of_normal",
                         [](const fs::path&) {
                           Scene scene = PeirceStrip({});
@@ -190,7 +192,7 @@ std::vector<ExtremeCase> AllCases() {
                           return scene;
                         },
                         Ends::kFailed,
-                        {"1 snap", "no rest state"}));
+                        {"no rest state"}));
 
   // Grippers: two full turns about the strip's axis; a strip pulled to
   // three times its length; an end driven into a table.
