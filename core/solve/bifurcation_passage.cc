@@ -83,9 +83,13 @@ std::optional<StabilityEvent> PivotChange(const SolveRun& run,
   return event;
 }
 
+bool LosesStability(const SolveRun& run, const ContinuationStep& step) {
+  return run.recorder->last_negative_pivots() == 0 && step.negative_pivots > 0 &&
+         run.options.branching == Branching::kStable;
+}
+
 bool SwitchesAt(const SolveRun& run, const StabilityEvent& event, const ContinuationStep& step) {
-  return event.kind == StabilityKind::kBifurcation && run.recorder->last_negative_pivots() == 0 &&
-         step.negative_pivots > 0 && run.options.branching == Branching::kStable;
+  return event.kind == StabilityKind::kBifurcation && LosesStability(run, step);
 }
 
 StageOutcome PassBifurcation(SolveRun& run,

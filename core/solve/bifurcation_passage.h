@@ -26,6 +26,12 @@ std::optional<StabilityEvent> PivotChange(const SolveRun& run,
                                           const ContinuationStep& step,
                                           int& direction);
 
+// Whether `step` left a stable state under `stable` branching: the last
+// recorded step had 0 negative pivots, this one has some. Where that is a
+// bifurcation the run switches branch (SwitchesAt); a limit point, it snaps
+// (SnapsAt).
+bool LosesStability(const SolveRun& run, const ContinuationStep& step);
+
 // Whether the run switches branch at this event: a bifurcation crossed from
 // a stable state under `stable` branching. Between a limit point and the next
 // one the path is unstable already (a real part snaps through it), and the

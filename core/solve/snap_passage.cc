@@ -127,8 +127,7 @@ StageOutcome RecordSnap(SolveRun& run,
 }  // namespace
 
 bool SnapsAt(const SolveRun& run, const StabilityEvent& event, const ContinuationStep& step) {
-  return event.kind == StabilityKind::kLimit && run.recorder->last_negative_pivots() == 0 &&
-         step.negative_pivots > 0 && run.options.branching == Branching::kStable;
+  return event.kind == StabilityKind::kLimit && LosesStability(run, step);
 }
 
 StageOutcome Snap(SolveRun& run,

@@ -26,16 +26,12 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double EulerLoad(const test::StripSpec& spec) {
-  return kPi * kPi * test::StripBendingStiffness(spec) / (4 * spec.length * spec.length);
-}
-
 // The column of `elements` elements under 2 P_E, its stepper, and the two
 // points the switch starts from.
 struct Column {
   explicit Column(int elements, NewtonSettings newton = Tight())
       : spec(test::StripOf(elements)),
-        s(test::TipLoadedStrip(spec, {-2 * EulerLoad(spec), 0, 0}, {0, 0, 0})),
+        s(test::TipLoadedStrip(spec, {-2 * test::CantileverEulerLoad(spec), 0, 0}, {0, 0, 0})),
         stepper(s.system, s.loading, newton, s.model.characteristic_length) {
     start = {s.model.reference, 0.0, {}};
     crossing = {s.model.reference, 0.0, {}};

@@ -24,10 +24,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double EulerLoad(const test::StripSpec& spec) {
-  return kPi * kPi * test::StripBendingStiffness(spec) / (4 * spec.length * spec.length);
-}
-
 // The elastica under P = `ratio` P_E: k from K(k) = (π/2)√ratio by bisection
 // (K rises with k). With ω² = P/EI: L = K/ω, the tip's deflection 2k/ω, its
 // projection on the axis (2E − K)/ω, and, from the first integral θ'² =
@@ -67,7 +63,8 @@ struct Minimised {
 // to its distance from the root (0: exactly straight).
 Minimised MinimiseColumn(int elements, double tip_push) {
   const test::StripSpec spec = test::StripOf(elements);
-  test::SceneSystem s(test::TipLoadedStrip(spec, {-2 * EulerLoad(spec), 0, 0}, {0, 0, 0}));
+  test::SceneSystem s(
+      test::TipLoadedStrip(spec, {-2 * test::CantileverEulerLoad(spec), 0, 0}, {0, 0, 0}));
   ShellState state = s.model.reference;
   for (int i = 0; i < s.model.NodeCount(); ++i)
     state.positions(i, 2) += tip_push * state.positions(i, 0) / spec.length;
@@ -92,7 +89,7 @@ Minimised MinimiseColumn(int elements, double tip_push) {
 TEST(EnergyMinimiser, FromTheStraightColumnPastEulersLoadItComesToRestOnTheElastica) {
   const Elastica exact = ElasticaAt(2.0);
   const test::StripSpec spec = test::StripOf(8);
-  const double pl = 2 * EulerLoad(spec) * spec.length;
+  const double pl = 2 * test::CantileverEulerLoad(spec) * spec.length;
   std::vector<double> deflection, energy;
   for (int elements : {8, 16}) {
     const Minimised m = MinimiseColumn(elements, 0.0);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 
 #include "core/model/scene.h"
 
@@ -24,6 +25,11 @@ inline StripSpec StripOf(int elements) {
 
 inline double StripBendingStiffness(const StripSpec& s) {  // EI [N·m²]
   return s.youngs_modulus * s.width * std::pow(s.thickness, 3) / 12.0;
+}
+
+// The clamped–free strip's first Euler load P_E = π²EI/4L² [N].
+inline double CantileverEulerLoad(const StripSpec& s) {
+  return std::numbers::pi * std::numbers::pi * StripBendingStiffness(s) / (4 * s.length * s.length);
 }
 
 // A cantilever strip with a clamped root, no loads, no stages yet.
