@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/fe/edge_moments.h"
+
 namespace drape {
 namespace {
 
@@ -95,6 +97,8 @@ double EquilibriumSystem::Assemble(const ShellState& state,
                                   velocity,
                                   velocity ? &rate_ : nullptr);
     if (contact_) AddContact(state, with_tangent, velocity);
+    if (state.load_factor != 0 && HasEdgeMoments(model_))
+      energy += AddEdgeMoments(state, with_tangent);
     if (!self_contact_ || AddSelfContact(state, with_tangent, energy)) break;
   }
   timers_.assembly_s += SecondsSince(start);
@@ -109,6 +113,24 @@ double EquilibriumSystem::PotentialEnergy(const ShellState& state,
   for (int i = 0; i < model_.NodeCount(); ++i)
     energy -= external.segment<3>(kDofsPerNode * i)
                   .dot((state.positions.row(i) - reference.row(i)).transpose());
+  return energy;
+}
+
+double EquilibriumSystem::AddEdgeMoments(const ShellState& state, bool with_tangent) {
+  const double factor = state.load_factor;
+  double energy = 0;
+  for (const auto& t : EdgeMomentTerms(model_, state)) {
+    energy += factor * t.energy;
+    int dof[10];
+    for (int k = 0; k < 10; ++k) dof[k] = kDofsPerNode * t.nodes[k / 5] + k % 5;
+    for (int k = 0; k < 10; ++k) internal_(dof[k]) += factor * t.force(k);
+    if (!with_tangent) continue;
+    for (int k = 0; k < 10; ++k)
+      for (int l = 0; l < 10; ++l) {
+        const int r = dofs_.Free(dof[k]), c = dofs_.Free(dof[l]);
+        if (r >= 0 && c >= r) tangent_.coeffRef(r, c) += factor * t.stiffness(k, l);
+      }
+  }
   return energy;
 }
 

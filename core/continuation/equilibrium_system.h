@@ -70,7 +70,8 @@ class EquilibriumSystem {
   // The total potential energy at `state` under the loads `external` (full, 5
   // per node) [J]: strain energy, self-contact barrier and obstacle contact
   // (NodeContact::Energy), less the forces' work from the reference
-  // positions. Moments act on the nodal bases and have no potential here.
+  // positions, and the moments about loaded edges (their potential −M θ, θ
+  // in (−π, π]); other moments act on the nodal bases and have none here.
   // Assembles the force (not the tangent) there.
   double PotentialEnergy(const ShellState& state, const Eigen::VectorXd& external);
 
@@ -113,6 +114,9 @@ class EquilibriumSystem {
 
  private:
   void AddContact(const ShellState& state, bool with_tangent, const Eigen::VectorXd* velocity);
+  // Adds the moments about loaded edges at the state's load factor (their
+  // work, force and load stiffness); returns their energy.
+  double AddEdgeMoments(const ShellState& state, bool with_tangent);
   // The pattern-dependent parts: assembler, tangent, analysis, slots.
   void BuildPattern();
   // Adds the self-contact barrier; false (nothing added to the tangent) when

@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include "core/fe/edge_moments.h"
 #include "core/fe/material_section.h"
 #include "core/mechanics/bilinear_quad.h"
 #include "core/mechanics/director.h"
@@ -125,10 +126,12 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
   for (const auto& gripper : scene.grippers)
     model.grippers.push_back({gripper.name, selections[s++].nodes, gripper.hold});
   for (const auto& load : scene.loads) {
-    const auto& nodes = selections[s++].nodes;
-    const double share = 1.0 / static_cast<double>(nodes.size());
-    model.loads.push_back(
-        {load.name, nodes, share * ToEigen(load.force), share * ToEigen(load.moment)});
+    model.loads.push_back(MakeNodalLoad(mesh,
+                                        model.reference,
+                                        load.name,
+                                        selections[s++].nodes,
+                                        ToEigen(load.force),
+                                        ToEigen(load.moment)));
   }
   for (const auto& probe : scene.probes) model.probes.push_back(LocateProbe(mesh, probe));
   return model;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/fe/shell_state.h"
+#include "core/mechanics/edge_twist.h"
 #include "core/mechanics/shell_element.h"
 #include "core/mechanics/shell_section.h"
 #include "core/model/mesh.h"
@@ -23,11 +24,23 @@ struct HeldNodes {
   Fixity fixity = Fixity::kPosition;
 };
 
+// One segment of a loaded edge and its share of the moment about the edge's
+// axis, which does work through the segment's twist (edge_twist.h).
+struct EdgeMomentSegment {
+  int nodes[2] = {0, 0};
+  EdgeTwistReference reference;
+  double moment = 0;  // about reference.axis [N·m]
+};
+
 struct NodalLoad {
   std::string name;
   std::vector<int> nodes;
-  Eigen::Vector3d force_per_node = Eigen::Vector3d::Zero();   // [N]
-  Eigen::Vector3d moment_per_node = Eigen::Vector3d::Zero();  // [N·m]
+  Eigen::Vector3d force_per_node = Eigen::Vector3d::Zero();  // [N]
+  // The part of the moment a fixed vector on each node's rotation (all of it
+  // unless the nodes are a line of element edges) [N·m].
+  Eigen::Vector3d moment_per_node = Eigen::Vector3d::Zero();
+  // On a line of element edges, the moment's part about that line.
+  std::vector<EdgeMomentSegment> edge_segments;
 };
 
 // A material point given in reference coordinates: element and (ξ, η).

@@ -28,6 +28,9 @@ struct ShellState {
   std::vector<Eigen::Matrix3d> rotations;              // Λ per node
   // One per scene obstacle (empty: every obstacle where the scene put it).
   std::vector<ObstaclePlacement> obstacles;
+  // The point loads' factor here (StageLoading::Place sets it): the moments
+  // about loaded edges are potentials, so the system's energy scales with it.
+  double load_factor = 0;
 
   int NodeCount() const { return static_cast<int>(positions.rows()); }
   Eigen::Vector3d Director(int node) const { return rotations[node].col(2); }

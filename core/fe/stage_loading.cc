@@ -1,5 +1,7 @@
 #include "core/fe/stage_loading.h"
 
+#include "core/fe/edge_moments.h"
+
 namespace drape {
 
 StageLoading::StageLoading(const ShellModel& model,
@@ -33,6 +35,7 @@ std::vector<ObstacleMotion> StageLoading::ObstacleMotions(double lambda) const {
 }
 
 void StageLoading::Place(double lambda, ShellState& state) const {
+  state.load_factor = LoadFactor(lambda);
   for (const auto& o : obstacles_) {
     // world = M(start(x)): R = R_M R₀, t = R_M (t₀ − c) + c + d.
     const RigidMotion m = MotionAt(*o.path, lambda);
@@ -73,7 +76,7 @@ Eigen::VectorXd StageLoading::External(double lambda, const ShellState& state) c
 
 Eigen::VectorXd StageLoading::ExternalRate(const ShellState& state) const {
   if (kind_ == StageKind::kGravity) return model_.weight_load;
-  if (kind_ == StageKind::kLoad) return PointLoads(state);
+  if (kind_ == StageKind::kLoad) return PointLoads(state) + EdgeMomentForce(model_, state);
   return Eigen::VectorXd::Zero(model_.DofCount());
 }
 

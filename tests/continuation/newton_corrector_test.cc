@@ -170,6 +170,7 @@ TEST(NewtonCorrector, EndMomentBendsTheStripIntoACircleOfRadiusEIOverM) {
     const double radius = spec.length;  // one radian of bend: M = EI/L
     test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, 0}, {0, ei / radius, 0}));
     ShellState state = test::ArcState(s.model, radius);
+    s.loading.Place(1.0, state);  // the load factor the edge moment's work scales with
     NewtonSettings settings;
     settings.tolerance = 1e-12;
     const NewtonOutcome out = SolveEquilibrium(s.system, FullLoad(s), settings, state, nullptr);
@@ -223,6 +224,7 @@ TEST(NewtonCorrector, ConvergesQuadraticallyOnACantileverUnderAnEndMoment) {
   const double radius = spec.length;
   test::SceneSystem s(test::TipLoadedStrip(spec, {0, 0, 0}, {0, ei / radius, 0}));
   ShellState converged = test::ArcState(s.model, radius);
+  s.loading.Place(1.0, converged);
   NewtonSettings settings;
   settings.tolerance = 1e-15;  // on to the round-off floor
   ASSERT_EQ(SolveEquilibrium(s.system, FullLoad(s), settings, converged, nullptr).status,
@@ -234,6 +236,9 @@ TEST(NewtonCorrector, ConvergesQuadraticallyOnACantileverUnderAnEndMoment) {
   for (double delta : {1e-1, 1e-2, 1e-3}) {
     std::vector<ShellState> iterates;  // the state at each assembly
     ShellState state = converged;
+    // The moment about the tip edge is a potential scaled by the state's
+    // load factor; the rest of the load scales here.
+    state.load_factor = 1 + delta;
     const NewtonOutcome out = SolveEquilibrium(
         s.system,
         [&](const ShellState& x) {
