@@ -168,6 +168,8 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
   int restarts = 0;
   Eigen::VectorXd drag_scale;
   const double energy_before = system.PotentialEnergy(state, external(state));
+  const Eigen::MatrixX3d start = state.positions;
+  const double reach = settings.max_travel * system.model().characteristic_length;
   auto finish = [&](NewtonOutcome::Status status, std::string reason) {
     result.status = status;
     result.reason = std::move(reason);
@@ -211,6 +213,11 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
       continue;
     }
     ++out.steps;
+    if (const double travel = (state.positions - start).rowwise().norm().maxCoeff(); travel > reach)
+      return finish(NewtonOutcome::Status::kDiverged,
+                    "nothing holds the part: it moves on without coming to rest (" +
+                        Number(travel) + " m from where the jump began, " +
+                        Number(travel / system.model().characteristic_length) + " times its size)");
     if (step.newton.iterations > kSlowStep) {
       mu = kDragFactor * std::max(mu, settings.smallest_drag);
       quick_in_a_row = 0;

@@ -37,6 +37,12 @@ struct MinimiserSettings {
   // A saddle reached (‖R‖ converged, some pivots negative) is left along its
   // lowest mode this many times before the minimiser gives up.
   int max_restarts = 3;
+  // A node this many times the part's size (its diagonal) from where it
+  // started ends the search: nothing holds the part (a sheet sliding down a
+  // table steeper than its friction allows). Left to go on, such a part
+  // travels until its coordinates' round-off exceeds the tolerance and it
+  // would pass for resting.
+  double max_travel = 10.0;
 };
 
 struct MinimiserOutcome {
