@@ -70,13 +70,14 @@ class FramesCsv {
  public:
   explicit FramesCsv(const std::filesystem::path& file) : out_(file) {
     if (!out_) throw std::runtime_error("cannot write " + file.string());
-    out_ << "frame,seconds,residual_ratio,corrections,factorizations,offset_x,offset_y,offset_z\n";
+    out_ << "frame,seconds,residual_ratio,corrections,factorizations,offset_x,offset_y,offset_z,"
+            "event\n";
   }
   void Add(const DragFrame& f) {
     char row[256];
     std::snprintf(row,
                   sizeof row,
-                  "%d,%.6g,%.6g,%d,%d,%.9g,%.9g,%.9g\n",
+                  "%d,%.6g,%.6g,%d,%d,%.9g,%.9g,%.9g,%s\n",
                   f.frame,
                   f.seconds,
                   f.residual_ratio,
@@ -84,7 +85,8 @@ class FramesCsv {
                   f.factorizations,
                   f.offset.x(),
                   f.offset.y(),
-                  f.offset.z());
+                  f.offset.z(),
+                  f.snapped ? "snap" : "");
     out_ << row << std::flush;
   }
 
@@ -140,6 +142,7 @@ int RunDrag(const DragArgs& args) {
     return 1;
   }
   double worst = 0, total_s = 0;
+  int snaps = 0;
   for (int f = 1; f <= args.frames; ++f) {
     if (cancel.IsCancelled()) {
       std::cerr << command << ": cancelled after frame " << f - 1 << "; "
@@ -150,18 +153,21 @@ int RunDrag(const DragArgs& args) {
     frames->Add(frame);
     worst = std::max(worst, frame.residual_ratio);
     total_s += frame.seconds;
+    snaps += frame.snapped;
   }
   if (!args.quiet) {
     char line[200];
     std::snprintf(line,
                   sizeof line,
                   "  dragged '%s' in %d frames: %.3g s each on average (%.1f Hz), residual "
-                  "ratio at most %.3g\n",
+                  "ratio at most %.3g, %d snap%s\n",
                   args.gripper.c_str(),
                   args.frames,
                   total_s / args.frames,
                   args.frames / std::max(total_s, 1e-9),
-                  worst);
+                  worst,
+                  snaps,
+                  snaps == 1 ? "" : "s");
     std::cerr << line << "  released: solving the dragged scene from the start\n";
   }
 

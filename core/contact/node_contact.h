@@ -152,4 +152,27 @@ class NodeContact {
 // the conditioning it had without contact.
 double AutoPenalty(const ShellModel& model);
 
+// The stabilisation springs of `contact` (may be null) off for this object's
+// lifetime and back on after: they hold the nodes where the last step left
+// them, and a part that snaps must not land propped on them.
+class StabilizationOff {
+ public:
+  explicit StabilizationOff(NodeContact* contact)
+      : contact_(contact),
+        per_node_(contact ? contact->stabilization() : 0.0),
+        held_(contact ? contact->stabilization_held() : std::vector<bool>{}) {
+    if (contact_) contact_->SetStabilization(0.0, held_);
+  }
+  ~StabilizationOff() {
+    if (contact_) contact_->SetStabilization(per_node_, held_);
+  }
+  StabilizationOff(const StabilizationOff&) = delete;
+  StabilizationOff& operator=(const StabilizationOff&) = delete;
+
+ private:
+  NodeContact* contact_;
+  double per_node_;
+  std::vector<bool> held_;
+};
+
 }  // namespace drape

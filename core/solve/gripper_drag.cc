@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "core/continuation/energy_minimiser.h"
 #include "core/fe/element_orientation.h"
 #include "core/fe/stage_loading.h"
 #include "core/linalg/machine_resources.h"
@@ -14,6 +15,9 @@ namespace drape {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Jumps that find no rest state, in a row, after which a drag stops trying.
+constexpr int kSnapsToTry = 2;
 
 std::string DragStageName(const std::string& gripper) {
   return "drag " + gripper;
@@ -49,7 +53,7 @@ double GripperDrag::Predict(const Eigen::Vector3d& motion, DragFrame& frame) {
   EquilibriumSystem& system = *basis_.system;
   const Eigen::VectorXd rate = HandleRate(motion);
   system.Assemble(basis_.state, /*with_tangent=*/true, &rate);
-  system.Factorize();
+  negative_pivots_ = system.Factorize().negative_pivots;
   ++frame.factorizations;
   Eigen::VectorXd increment =
       rate +
@@ -61,6 +65,12 @@ double GripperDrag::Predict(const Eigen::Vector3d& motion, DragFrame& frame) {
   return t;
 }
 
+Eigen::VectorXd GripperDrag::External(const ShellState& state) const {
+  const Stage hold{.kind = StageKind::kHold};
+  const StageLoading loading(*basis_.model, hold, {}, basis_.weight_factor, basis_.load_factor);
+  return loading.External(1.0, state);
+}
+
 double GripperDrag::Residual(bool fresh, Eigen::VectorXd& residual, DragFrame& frame) {
   EquilibriumSystem& system = *basis_.system;
   system.Assemble(basis_.state, fresh);
@@ -68,9 +78,7 @@ double GripperDrag::Residual(bool fresh, Eigen::VectorXd& residual, DragFrame& f
     system.Factorize();
     ++frame.factorizations;
   }
-  const Stage hold{.kind = StageKind::kHold};
-  const StageLoading loading(*basis_.model, hold, {}, basis_.weight_factor, basis_.load_factor);
-  const Eigen::VectorXd external = loading.External(1.0, basis_.state);
+  const Eigen::VectorXd external = External(basis_.state);
   residual = system.Residual(external);
   return residual.norm() / std::max(system.ForceLevel(external), 1e-300);
 }
@@ -115,6 +123,33 @@ double GripperDrag::Correct(DragFrame& frame) {
   return ratio;
 }
 
+bool GripperDrag::Snap(const Eigen::Vector3d& motion, DragFrame& frame) {
+  const ShellState kept = basis_.state;
+  const double reached = Predict(motion, frame);
+  const StabilizationOff springs(basis_.contact);
+  MinimiserSettings settings;
+  settings.newton.tolerance = settings_.tolerance;
+  settings.newton.max_iterations = settings_.snap_iterations;
+  const MinimiserOutcome out = MinimiseEnergy(
+      *basis_.system,
+      [&](const ShellState& s) { return External(s); },
+      settings,
+      basis_.state,
+      nullptr);
+  frame.corrections += out.newton.iterations;
+  if (out.newton.status != NewtonOutcome::Status::kConverged) {
+    basis_.state = kept;
+    frame.not_followed = "the fabric cannot follow the handle and its jump found no rest state: " +
+                         out.newton.reason;
+    return false;
+  }
+  offset_ += reached * motion;
+  frame.snapped = true;
+  frame.energy_released = -out.energy_change;
+  frame.residual_ratio = out.newton.residuals.empty() ? 0.0 : out.newton.residuals.back();
+  return true;
+}
+
 DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
   const auto start = Clock::now();
   UseAssemblyThreads(settings_.threads);
@@ -122,7 +157,7 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
   frame.frame = ++frames_;
   const Eigen::Vector3d motion = offset - offset_;
   double taken = 0, share = 1;
-  bool moved = false;
+  bool moved = false, stuck = false;
   // The motion in sub-steps: whole if it can, else halves, quarters, …
   // (growing back after a success), until it is all taken or the sub-steps
   // run out; then the gripper lags the handle and the next frame catches up.
@@ -135,6 +170,13 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
     const double part = std::min(share, 1 - taken);
     const ShellState kept = basis_.state;
     const double reached = Predict(part * motion, frame);
+    if (negative_pivots_ > 0) {
+      // Where the sub-step starts the fabric is past a limit (the last one
+      // followed a symmetric path beyond it): it cannot rest there.
+      basis_.state = kept;
+      stuck = true;
+      break;
+    }
     const double ratio = Correct(frame);
     // A frame never shows a state no part can be in.
     if (IsFinite(basis_.state) && ratio <= settings_.worst_ratio &&
@@ -149,7 +191,22 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
     }
     basis_.state = kept;
     share = part / 2;  // of what failed: after a success `share` may exceed it
-    if (share < std::ldexp(1.0, -settings_.max_halvings)) break;
+    // Past a limit (the tangent where the sub-step started is indefinite) or
+    // unable to take even the smallest share, the fabric cannot follow.
+    stuck = negative_pivots_ > 0 || share < std::ldexp(1.0, -settings_.max_halvings);
+    if (stuck) break;
+  }
+  // A jump that found no rest state is not tried again until the fabric has
+  // followed the handle once more (each costs up to snap_iterations).
+  if (moved && !stuck) failed_snaps_ = 0;
+  if (stuck && settings_.snap_iterations > 0 && failed_snaps_ < kSnapsToTry) {
+    if (Snap((1 - taken) * motion, frame)) {
+      taken = 1;
+      moved = true;
+      failed_snaps_ = 0;
+    } else {
+      ++failed_snaps_;
+    }
   }
   if (!moved) {
     Eigen::VectorXd residual;

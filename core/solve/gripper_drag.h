@@ -19,7 +19,10 @@
 // handle and catches up.
 //
 // A frame is not a converged step: it reports its residual ratio, and a
-// release solves the edited scene from the start (`DraggedScene`).
+// release solves the edited scene from the start (`DraggedScene`). Where the
+// fabric cannot follow the handle (it has passed a limit: a compressive drag
+// that wrinkles), the frame takes the jump to the next stable rest state
+// (`DragSettings::snap_iterations`) and says so (`DragFrame::snapped`).
 //
 //   ShellSolver solver(scene, options);
 //   solver.Solve({});
@@ -84,6 +87,14 @@ struct DragSettings {
   // A residual this many times its round-off level cannot fall further: the
   // corrector's own floor (NewtonSettings::round_off_factor).
   double round_off_factor = NewtonSettings{}.round_off_factor;
+  // Where the fabric cannot follow the handle quasi-statically (a sub-step
+  // of the smallest share fails, or the tangent where the frame starts has
+  // negative pivots: the part is past a limit), it snaps: the gripper goes
+  // to the handle and the energy minimiser (energy_minimiser.h) takes the
+  // fabric to a stable rest state, within this many Newton iterations
+  // (0: never; the gripper then lags, as before). After two jumps in a row
+  // that find none, the drag stops trying until the fabric follows again.
+  int snap_iterations = 400;
 };
 
 struct DragFrame {
@@ -93,6 +104,13 @@ struct DragFrame {
   double residual_ratio = 0;                         // ‖R‖ / force level at its end
   int corrections = 0;                               // linear solves
   int factorizations = 0;
+  // The fabric snapped in this frame: it jumped to a stable rest state with
+  // the gripper at the handle, releasing this much energy [J].
+  bool snapped = false;
+  double energy_released = 0;
+  // Why the fabric could not follow the handle here, when a jump was tried
+  // and found no rest state ("" otherwise): the gripper stays behind.
+  std::string not_followed;
 };
 
 class GripperDrag {
@@ -120,11 +138,18 @@ class GripperDrag {
   double Residual(bool fresh, Eigen::VectorXd& residual, DragFrame& frame);
   // Newton corrections on the kept factorisation; returns the last ratio.
   double Correct(DragFrame& frame);
+  // The jump to a stable rest state with the gripper moved by `motion`;
+  // false (the state kept) when the minimiser finds none.
+  bool Snap(const Eigen::Vector3d& motion, DragFrame& frame);
+  // F_ext: the weight and loads the run's stages reached.
+  Eigen::VectorXd External(const ShellState& state) const;
 
   DragBasis basis_;
   DragSettings settings_;
   Eigen::Vector3d offset_ = Eigen::Vector3d::Zero();
   int frames_ = 0;
+  int negative_pivots_ = 0;  // of the tangent the last prediction factorised
+  int failed_snaps_ = 0;     // jumps in a row that found no rest state
 };
 
 // The scene a drag leaves: `scene` with the gripper carried by `by` after

@@ -38,20 +38,7 @@ Jump JumpFrom(SolveRun& run, const StageLoading& loading, const SnapStart& start
   Jump jump;
   jump.state = start.pushed;
   loading.Place(start.lambda, jump.state);
-  // The contact stabilisation's springs hold the nodes where the last step
-  // left them: a part that snaps must not land on them (it would rest
-  // propped by an artificial force), so they are off while it jumps.
-  struct Suspended {
-    NodeContact* contact;
-    double per_node;
-    std::vector<bool> held;
-    ~Suspended() {
-      if (contact) contact->SetStabilization(per_node, held);
-    }
-  } springs{run.contact.get(),
-            run.contact ? run.contact->stabilization() : 0.0,
-            run.contact ? run.contact->stabilization_held() : std::vector<bool>{}};
-  if (run.contact) run.contact->SetStabilization(0.0, springs.held);
+  const StabilizationOff springs(run.contact.get());
   MinimiserSettings settings;
   settings.newton = run.Newton();
   settings.newton.max_iterations *= kMinimiserIterationsPerNewton;

@@ -108,6 +108,12 @@ void LiveDrag::ShowFrame(FrameRenderer* renderer, const Eigen::Vector3d& offset)
     renderer->Update(frame);
     viewport_->requestRender();
   }
+  if (last_->snapped)
+    emit message(
+        QString("'%1' was dragged past where the fabric can follow: it snapped to a stable "
+                "rest state, releasing %2 J")
+            .arg(QString::fromStdString(gripper_))
+            .arg(last_->energy_released, 0, 'g', 3));
   emit frameShown(*last_);
 }
 
