@@ -154,6 +154,8 @@ int RunDrag(const DragArgs& args) {
     worst = std::max(worst, frame.residual_ratio);
     total_s += frame.seconds;
     snaps += frame.snapped;
+    if (!args.quiet && !frame.not_followed.empty())
+      std::cerr << "  frame " << f << ": " << frame.not_followed << "\n";
   }
   if (!args.quiet) {
     char line[200];

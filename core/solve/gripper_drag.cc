@@ -144,8 +144,10 @@ bool GripperDrag::Snap(const Eigen::Vector3d& motion, DragFrame& frame) {
     return false;
   }
   offset_ += reached * motion;
-  frame.snapped = true;
-  frame.energy_released = -out.energy_change;
+  // A prediction already at rest (a sub-step that failed only on its
+  // corrections' budget) is no jump.
+  frame.snapped = out.steps > 0;
+  frame.energy_released = frame.snapped ? -out.energy_change : 0.0;
   frame.residual_ratio = out.newton.residuals.empty() ? 0.0 : out.newton.residuals.back();
   return true;
 }
