@@ -13,7 +13,9 @@
 // a. Each node's twist is the angle, about a, from its reference director
 // (projected normal to a₀) carried by S, to its current director; the
 // segment's twist is the mean of its two nodes'. For an edge that stays on its
-// axis (a = a₀) the twist is the rotation of the directors about it.
+// axis (a = a₀) the twist is the rotation of the directors about it. The
+// swing is undefined for an edge turned end for end (a = −a₀): the values are
+// then not finite, and the steps that reach it are cut back.
 #pragma once
 
 #include <Eigen/Core>

@@ -193,9 +193,8 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
     }
     basis_.state = kept;
     share = part / 2;  // of what failed: after a success `share` may exceed it
-    // Past a limit (the tangent where the sub-step started is indefinite) or
-    // unable to take even the smallest share, the fabric cannot follow.
-    stuck = negative_pivots_ > 0 || share < std::ldexp(1.0, -settings_.max_halvings);
+    // Unable to take even the smallest share, the fabric cannot follow.
+    stuck = share < std::ldexp(1.0, -settings_.max_halvings);
     if (stuck) break;
   }
   // A jump that found no rest state is not tried again until the fabric has
