@@ -213,11 +213,14 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
       continue;
     }
     ++out.steps;
-    if (const double travel = (state.positions - start).rowwise().norm().maxCoeff(); travel > reach)
+    if (const double travel = (state.positions - start).rowwise().norm().maxCoeff();
+        travel > reach) {
+      out.unheld = true;
       return finish(NewtonOutcome::Status::kDiverged,
                     "nothing holds the part: it moves on without coming to rest (" +
                         Number(travel) + " m from where the jump began, " +
                         Number(travel / system.model().characteristic_length) + " times its size)");
+    }
     if (step.newton.iterations > kSlowStep) {
       mu = kDragFactor * std::max(mu, settings.smallest_drag);
       quick_in_a_row = 0;

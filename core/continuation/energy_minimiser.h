@@ -54,6 +54,8 @@ struct MinimiserOutcome {
   // Π at the end less Π at the start (EquilibriumSystem::PotentialEnergy)
   // [J]: what the jump released, negated.
   double energy_change = 0;
+  // It ended because the part travelled beyond max_travel: nothing holds it.
+  bool unheld = false;
 };
 
 // Minimises the total potential energy at a fixed load from `state` (updated

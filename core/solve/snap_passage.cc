@@ -52,6 +52,15 @@ Jump JumpFrom(SolveRun& run, const StageLoading& loading, const SnapStart& start
   return jump;
 }
 
+// What to change when a jump finds no rest state.
+std::string SnapAdvice(SnapTrigger trigger, const MinimiserOutcome& outcome) {
+  if (outcome.unheld)
+    return ". Hold the part (supports, grippers) or let friction hold it (contact.friction)";
+  if (trigger == SnapTrigger::kStart)
+    return ". Hold the part more (supports, grippers) or give it bending (material.bending)";
+  return ". solver.branching: fundamental follows the unstable path instead";
+}
+
 StageOutcome RecordSnap(SolveRun& run,
                         int index,
                         const StageLoading& loading,
@@ -82,11 +91,7 @@ StageOutcome RecordSnap(SolveRun& run,
                    : (start.trigger == SnapTrigger::kLimit ? "past a limit point"
                                                            : "past a bifurcation point"),
                start.lambda) +
-            newton.reason +
-            (start.trigger == SnapTrigger::kStart
-                 ? ". Hold the part more (supports, grippers) or give it bending (material.bending)"
-                 : ". solver.branching: fundamental follows the unstable path instead") +
-            ContactHint(run));
+            newton.reason + SnapAdvice(start.trigger, jump.outcome) + ContactHint(run));
   StabilityEvent event;
   event.kind = StabilityKind::kSnap;
   event.trigger = start.trigger;
@@ -148,9 +153,11 @@ StageOutcome SnapFromStart(SolveRun& run,
   if (jump.outcome.newton.status != NewtonOutcome::Status::kConverged &&
       jump.outcome.newton.status != NewtonOutcome::Status::kCancelled) {
     run.CountIterations(jump.outcome.newton.iterations, stage);
-    return StageOutcome::Stop(stuck.termination,
-                              stuck.message + "; nor does it come to rest at λ = " +
-                                  Format("%.6g", lambda) + " (" + jump.outcome.newton.reason + ")");
+    return StageOutcome::Stop(
+        stuck.termination,
+        stuck.message + "; nor does it come to rest at λ = " + Format("%.6g", lambda) + " (" +
+            jump.outcome.newton.reason + ")" +
+            (jump.outcome.unheld ? SnapAdvice(start.trigger, jump.outcome) : std::string()));
   }
   return RecordSnap(run, index, loading, start, jump, /*record_before=*/false, stage, landed);
 }

@@ -144,6 +144,8 @@ TEST(RunCliSnap, ASheetOnATableSteeperThanItsFrictionSaysNothingHoldsIt) {
       test::run_cli::RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("nothing holds the part"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("let friction hold it (contact.friction)"), std::string::npos)
+      << r.output;
   const json result = ReadJson(dir / "out" / "result.json");
   std::vector<std::string> nulls;
   test::CollectNulls(result, "", nulls);
