@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTest>
 #include <QUndoStack>
 
@@ -15,8 +16,11 @@
 #include <vector>
 
 #include "core/io/scene_reader.h"
+#include "core/io/scene_writer.h"
 #include "core/solve/gripper_drag.h"
 #include "core/solve/shell_solver.h"
+#include "support/strip_scene.h"
+#include "support/temp_dir.h"
 #include "support/test_paths.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/handle_controller.h"
@@ -191,6 +195,38 @@ TEST_F(Widgets, TheFabricFollowsTheEndOfALastMovesPathWhileItsHandleIsDragged) {
   EXPECT_FALSE(live->isDragging());
   EXPECT_EQ(std::get<LinePath>(window.document()->scene().stages[2].moves[0].path), released);
   EXPECT_GT(window.stepCount(), 0);
+}
+
+TEST_F(Widgets, AFrameThatSnapsSaysSoInTheStatusBar) {
+  // A strip clamped at both ends, its right end pushed past Euler's load
+  // (GripperDrag.PushedPastEulersLoadAStripSnapsOntoItsBuckledShape): one
+  // frame snaps, and the workbench says so.
+  test::TempDir dir("live-drag-snap");
+  test::StripSpec spec;
+  Scene scene = test::CantileverStrip(spec);
+  scene.grippers.push_back({"end", Selection{EdgeSelection{Side::kRight}, {}}, Fixity::kClamp});
+  scene.stages.push_back(Stage{.name = "rest", .kind = StageKind::kHold});
+  WriteScene(scene, dir / "strip.json");
+  MainWindow window;
+  window.resize(1000, 700);
+  window.show();
+  ASSERT_TRUE(window.openScene(QString::fromStdString((dir / "strip.json").string())));
+  QSignalSpy finished(window.runMonitor(), &RunMonitor::finished);
+  window.run();
+  ASSERT_TRUE(finished.wait(120000));
+  LiveDrag* live = window.handles()->liveDrag();
+  QSignalSpy frames(live, &LiveDrag::frameShown);
+  int snaps = 0;
+  for (int f = 1; f <= 8; ++f) {
+    live->follow(nullptr, "end", Eigen::Vector3d(-1e-3 * spec.length * f / 8, 0, 0));
+    ASSERT_EQ(frames.count(), f);
+    snaps += frames.last().at(0).value<DragFrame>().snapped;
+  }
+  EXPECT_EQ(snaps, 1);
+  // The frames after the snap follow quietly: its message stays.
+  const QString said = window.statusBar()->currentMessage();
+  EXPECT_TRUE(said.contains("snapped to a stable rest state")) << said.toStdString();
+  if (const char* shot = getenv("DRAPE_LIVE_DRAG_SHOT")) window.grab().save(shot);
 }
 
 }  // namespace
