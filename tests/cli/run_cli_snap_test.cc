@@ -36,22 +36,29 @@ constexpr double kSide = 0.1;       // [m]
 constexpr double kWeight = 1.5;     // [N/m²]
 constexpr double kIncrement = 0.1;  // Δλ₀: where the sheet falls
 
-json PickedUpSheet() {
+// A 10 × 10 cm sheet of 10 × 10 elements, 0.5 mm, kWeight, ν = 0.3, of
+// Young's modulus `modulus`; the callers hold it and add its stages.
+json Sheet(const std::string& name, const std::string& modulus) {
   return {{"drape_scene", 1},
-          {"name", "sheet picked up by two corners"},
+          {"name", name},
           {"fabric",
            {{"outline", {{"rectangle", {{"size", {"10 cm", "10 cm"}}, {"center", {0, 0}}}}}},
             {"mesh", {{"elements", {10, 10}}}}}},
           {"material",
            {{"thickness", "0.5 mm"},
             {"areal_weight", kWeight},
-            {"youngs_modulus", "2 MPa"},
-            {"poisson_ratio", 0.3}}},
-          {"grippers",
-           {{{"name", "left"}, {"select", {{"point", {"-5 cm", "5 cm"}}}}, {"hold", "position"}},
-            {{"name", "right"}, {"select", {{"point", {"5 cm", "5 cm"}}}}, {"hold", "position"}}}},
-          {"probes", {{{"name", "free"}, {"at", {0, "-5 cm"}}}}},
-          {"stages", {{{"name", "hang"}, {"kind", "gravity"}, {"initial_increment", kIncrement}}}}};
+            {"youngs_modulus", modulus},
+            {"poisson_ratio", 0.3}}}};
+}
+
+json PickedUpSheet() {
+  json sheet = Sheet("sheet picked up by two corners", "2 MPa");
+  sheet["grippers"] = {
+      {{"name", "left"}, {"select", {{"point", {"-5 cm", "5 cm"}}}}, {"hold", "position"}},
+      {{"name", "right"}, {"select", {{"point", {"5 cm", "5 cm"}}}}, {"hold", "position"}}};
+  sheet["probes"] = {{{"name", "free"}, {"at", {0, "-5 cm"}}}};
+  sheet["stages"] = {{{"name", "hang"}, {"kind", "gravity"}, {"initial_increment", kIncrement}}};
+  return sheet;
 }
 
 TEST(RunCliSnap, ASheetPickedUpByTwoCornersFallsToWhereItHangs) {
@@ -118,23 +125,14 @@ TEST(RunCliSnap, UnderFundamentalBranchingTheSameSheetDoesNotSnap) {
 // "converged"). Below the limit it stays where it lies (tan θ = 0.98 μ).
 json SheetOnATiltedTable(double slope) {
   const double angle = std::atan(slope);
-  return {
-      {"drape_scene", 1},
-      {"name", "sheet on a tilted table"},
-      {"fabric",
-       {{"outline", {{"rectangle", {{"size", {"10 cm", "10 cm"}}, {"center", {0, 0}}}}}},
-        {"mesh", {{"elements", {10, 10}}}}}},
-      {"material",
-       {{"thickness", "0.5 mm"},
-        {"areal_weight", kWeight},
-        {"youngs_modulus", "5 MPa"},
-        {"poisson_ratio", 0.3}}},
-      {"obstacles",
-       {{{"name", "table"}, {"plane", {{"point", {0, 0, "-0.25 mm"}}, {"normal", {0, 0, 1}}}}}}},
-      {"gravity", {{"direction", {std::sin(angle), 0, -std::cos(angle)}}}},
-      {"contact", {{"friction", 0.3}}},
-      {"probes", {{{"name", "centre"}, {"at", {0, 0}}}}},
-      {"stages", {{{"name", "weight"}, {"kind", "gravity"}, {"initial_increment", 0.05}}}}};
+  json sheet = Sheet("sheet on a tilted table", "5 MPa");
+  sheet["obstacles"] = {
+      {{"name", "table"}, {"plane", {{"point", {0, 0, "-0.25 mm"}}, {"normal", {0, 0, 1}}}}}};
+  sheet["gravity"] = {{"direction", {std::sin(angle), 0, -std::cos(angle)}}};
+  sheet["contact"] = {{"friction", 0.3}};
+  sheet["probes"] = {{{"name", "centre"}, {"at", {0, 0}}}};
+  sheet["stages"] = {{{"name", "weight"}, {"kind", "gravity"}, {"initial_increment", 0.05}}};
+  return sheet;
 }
 
 TEST(RunCliSnap, ASheetOnATableSteeperThanItsFrictionSaysNothingHoldsIt) {
