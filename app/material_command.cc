@@ -6,28 +6,47 @@
 // that softens (dM/dK < 0) inside its range is warned of.
 //
 // `drape material list [--json]`: the library materials a scene can name.
+//
+// `drape material show NAME [--json]`: a library entry as the engine would
+// take it, in the textile units KES and FAST report: the entry is read through
+// the scene reader (a scene naming it as its material) and its SI numbers are
+// converted back, so that the printed figures can be held against the table
+// the entry cites.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "app/commands.h"
+#include "core/fe/material_section.h"
 #include "core/io/kawabata_reader.h"
 #include "core/io/material_library.h"
+#include "core/io/scene_reader.h"
 #include "core/mechanics/moment_curvature.h"
 #include "core/mechanics/moment_curvature_fit.h"
+#include "core/model/overloaded.h"
 #include "core/model/scene_error.h"
 
 namespace drape::app {
 namespace {
 
-constexpr double kPerCm = 100.0;           // 1/cm in 1/m
-constexpr double kGfCmPerCm = 9.80665e-3;  // gf·cm/cm in N·m/m
+constexpr double kPerCm = 100.0;                    // 1/cm in 1/m
+constexpr double kGfCmPerCm = 9.80665e-3;           // gf·cm/cm in N·m/m
+constexpr double kGfCm2PerCm = 9.80665e-5;          // gf·cm²/cm in N·m²/m
+constexpr double kGfPerCm = 0.980665;               // gf/cm in N/m
+constexpr double kStandardGravity = 9.80665;        // m/s², weight to mass
+constexpr double kDegree = std::numbers::pi / 180;  // rad
+constexpr double kKesTensileLoad = 500;             // gf/cm, where KES-FB1 reads EMT
 
 struct FitArgs {
   std::string file;
@@ -182,6 +201,176 @@ int RunList(bool json) {
   return status;
 }
 
+// ---- material show --------------------------------------------------------
+
+// A library entry's figures in textile units, from the SI material the scene
+// reader builds of it.
+struct TextileFigures {
+  double thickness_mm = 0, weight_g_per_m2 = 0;
+  double bending_warp = 0, bending_weft = 0;  // Kawabata B [gf·cm²/cm]
+  double shear = 0;                           // G [gf/(cm·deg)]
+  double tensile_warp = 0, tensile_weft = 0;  // E·h [gf/cm]
+  double poisson_ratio = 0;
+  std::string membrane, bending_warp_law, bending_weft_law;
+};
+
+// The material a scene in the working directory gets with
+// "material": {"library": name}: a one-element scene, read as any other.
+Material LibraryMaterialAsScene(const std::string& name) {
+  const nlohmann::json scene = {
+      {"drape_scene", 1},
+      {"fabric",
+       {{"outline", {{"rectangle", {{"size", {1, 1}}}}}}, {"mesh", {{"elements", {1, 1}}}}}},
+      {"material", {{"library", name}}},
+      {"stages", {{{"name", "show"}, {"kind", "hold"}}}}};
+  return SceneFromJson(scene, std::filesystem::current_path()).material;
+}
+
+// Kawabata's B of a strip law: its mean slope between K = 0.5 and 1.5 1/cm
+// (for a linear law, its rigidity).
+double KawabataB(const MomentCurvatureLaw& strip) {
+  return (strip.Moment(1.5 * kPerCm) - strip.Moment(0.5 * kPerCm)) / kPerCm / kGfCm2PerCm;
+}
+
+const char* LawName(const BendingLaw& law) {
+  return std::visit(Overloaded{[](const LinearBending&) { return "linear"; },
+                               [](const PolynomialBending&) { return "polynomial"; },
+                               [](const CurveBending&) { return "curve"; }},
+                    law);
+}
+
+// Membrane moduli [Pa]: warp, weft, in-plane shear, and ν (ν₁₂).
+struct Moduli {
+  double warp, weft, shear, poisson;
+};
+Moduli MembraneModuli(const Membrane& membrane) {
+  return std::visit(
+      Overloaded{[](const IsotropicMembrane& m) {
+                   const double g = m.youngs_modulus / (2 * (1 + m.poisson_ratio));
+                   return Moduli{m.youngs_modulus, m.youngs_modulus, g, m.poisson_ratio};
+                 },
+                 [](const OrthotropicMembrane& m) {
+                   return Moduli{m.e1, m.e2, m.g12, m.nu12};
+                 }},
+      membrane);
+}
+
+TextileFigures FiguresOf(const Material& m) {
+  const double h = m.thickness;
+  const Moduli e = MembraneModuli(m.membrane);
+  TextileFigures f;
+  f.thickness_mm = h * 1e3;
+  f.weight_g_per_m2 = m.areal_weight / kStandardGravity * 1e3;
+  f.membrane = std::holds_alternative<IsotropicMembrane>(m.membrane) ? "isotropic" : "orthotropic";
+  f.tensile_warp = e.warp * h / kGfPerCm;
+  f.tensile_weft = e.weft * h / kGfPerCm;
+  f.shear = e.shear * h * kDegree / kGfPerCm;
+  f.poisson_ratio = e.poisson;
+  // The strip laws as the engine builds them (MakeMaterialSection): without a
+  // weft law the warp law bends every direction.
+  const BendingLaw& weft_law = m.bending.weft ? *m.bending.weft : m.bending.warp;
+  const auto warp = MakeStripLaw(m.bending.warp, e.warp * h * h * h / 12, "material.bending");
+  const auto weft = m.bending.weft
+                        ? MakeStripLaw(weft_law, e.weft * h * h * h / 12, "material.bending.weft")
+                        : warp;
+  f.bending_warp = KawabataB(*warp);
+  f.bending_weft = KawabataB(*weft);
+  f.bending_warp_law = LawName(m.bending.warp);
+  f.bending_weft_law = LawName(weft_law);
+  return f;
+}
+
+// The extension at the KES-FB1 load under a linear membrane [%].
+double EmtPercent(double tensile_gf_per_cm) {
+  return kKesTensileLoad / tensile_gf_per_cm * 100;
+}
+
+// A finite number, or JSON null (never NaN in the output).
+nlohmann::ordered_json Finite(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json FiguresJson(const std::string& library,
+                                   const LibraryMaterial& entry,
+                                   const TextileFigures& f) {
+  return {{"library", library},
+          {"name", entry.name},
+          {"source", entry.source},
+          {"file", entry.file.string()},
+          {"thickness_mm", Finite(f.thickness_mm)},
+          {"weight_g_per_m2", Finite(f.weight_g_per_m2)},
+          {"bending_law_warp", f.bending_warp_law},
+          {"bending_law_weft", f.bending_weft_law},
+          {"bending_rigidity_warp_gf_cm2_per_cm", Finite(f.bending_warp)},
+          {"bending_rigidity_weft_gf_cm2_per_cm", Finite(f.bending_weft)},
+          {"membrane", f.membrane},
+          {"shear_rigidity_gf_per_cm_deg", Finite(f.shear)},
+          {"tensile_stiffness_warp_gf_per_cm", Finite(f.tensile_warp)},
+          {"tensile_stiffness_weft_gf_per_cm", Finite(f.tensile_weft)},
+          {"emt_warp_percent_at_500_gf_per_cm", Finite(EmtPercent(f.tensile_warp))},
+          {"emt_weft_percent_at_500_gf_per_cm", Finite(EmtPercent(f.tensile_weft))},
+          {"poisson_ratio", Finite(f.poisson_ratio)}};
+}
+
+void PrintFigures(const std::string& library,
+                  const LibraryMaterial& entry,
+                  const TextileFigures& f) {
+  std::printf("%s: %s\n  source: %s\n  file: %s\n",
+              library.c_str(),
+              entry.name.c_str(),
+              entry.source.c_str(),
+              entry.file.string().c_str());
+  std::printf("  thickness T                %.4g mm\n", f.thickness_mm);
+  std::printf("  weight W                   %.4g g/m^2\n", f.weight_g_per_m2);
+  const std::string laws = f.bending_warp_law == f.bending_weft_law
+                               ? f.bending_warp_law + " law"
+                               : "warp " + f.bending_warp_law + ", weft " + f.bending_weft_law;
+  std::printf("  bending rigidity B         warp %.4g, weft %.4g gf*cm^2/cm (%s)\n",
+              f.bending_warp,
+              f.bending_weft,
+              laws.c_str());
+  std::printf(
+      "  shear rigidity G           %.4g gf/(cm*deg) (%s membrane)\n", f.shear, f.membrane.c_str());
+  std::printf(
+      "  tensile stiffness E*h      warp %.4g, weft %.4g gf/cm\n", f.tensile_warp, f.tensile_weft);
+  std::printf("  EMT at 500 gf/cm (linear)  warp %.4g, weft %.4g %%\n",
+              EmtPercent(f.tensile_warp),
+              EmtPercent(f.tensile_weft));
+  std::printf("  Poisson ratio              %.4g\n", f.poisson_ratio);
+  std::printf(
+      "B: the strip law's mean slope between K = 0.5 and 1.5 1/cm, as KES-FB2 reads it.\n"
+      "Not modelled: hysteresis (2HB, 2HG) and the tensile curve's nonlinearity (LT).\n");
+}
+
+// The names a scene could use, for an unknown one.
+std::string KnownNames(const std::vector<std::filesystem::path>& dirs) {
+  std::string known;
+  for (const auto& n : LibraryMaterialNames(dirs)) known += (known.empty() ? "" : ", ") + n;
+  return known.empty() ? "none (no library found in " + dirs.front().string() + " …)" : known;
+}
+
+int RunShow(const std::string& name, bool json) {
+  const auto dirs = MaterialLibraryDirs(std::filesystem::current_path());
+  const std::optional<std::filesystem::path> file = FindLibraryMaterial(name, dirs);
+  if (!file) {
+    std::cerr << "drape material show: no library material '" << name
+              << "'; the library has: " << KnownNames(dirs) << "\n";
+    return 1;
+  }
+  try {
+    const LibraryMaterial entry = ReadLibraryMaterial(*file);
+    const TextileFigures figures = FiguresOf(LibraryMaterialAsScene(name));
+    if (json)
+      std::cout << FiguresJson(name, entry, figures).dump(2) << "\n";
+    else
+      PrintFigures(name, entry, figures);
+    return 0;
+  } catch (const SceneError& e) {
+    std::cerr << "drape material show: " << e.what() << "\n";
+  }
+  return 1;
+}
+
 }  // namespace
 
 void AddMaterialCommand(CLI::App& app, CommandRunner& runner) {
@@ -217,6 +406,17 @@ void AddMaterialCommand(CLI::App& app, CommandRunner& runner) {
       "list", "List the library materials a scene can use as \"material\": {\"library\": NAME}");
   list->add_flag("--json", *list_json, "Print the list as JSON");
   list->callback([list_json, &runner] { runner = [list_json] { return RunList(*list_json); }; });
+
+  auto show_name = std::make_shared<std::string>();
+  auto show_json = std::make_shared<bool>(false);
+  CLI::App* show = material->add_subcommand(
+      "show", "Show a library material's figures in textile units (KES/FAST), as a scene reads it");
+  show->add_option("name", *show_name, "Library material name (see `drape material list`)")
+      ->required();
+  show->add_flag("--json", *show_json, "Print the figures as JSON");
+  show->callback([show_name, show_json, &runner] {
+    runner = [show_name, show_json] { return RunShow(*show_name, *show_json); };
+  });
 }
 
 }  // namespace drape::app

@@ -1,5 +1,7 @@
 // `drape material fit`: what it prints is a scene's `bending` object;
-// `drape material list`: the library a scene can name.
+// `drape material list`: the library a scene can name;
+// `drape material show`: a library entry's figures in textile units, read
+// back from the material a scene builds of it.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -7,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <variant>
 
 #include <unistd.h>
@@ -111,6 +114,97 @@ TEST(MaterialFitCli, WarnsOfAFitThatSoftensInsideItsRange) {
             std::string::npos)
       << r.output;
   std::filesystem::remove(soft);
+}
+
+// `drape material show NAME --json`, parsed; the exit code is checked.
+json ShowJson(const std::string& name) {
+  const test::CommandResult r =
+      test::RunDrape("material show '" + name + "' --json", test::Captured::kStdout);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return json::parse(r.output);
+}
+
+// Within 0.5 % of a published figure.
+void ExpectFigure(const json& shown, const char* key, double published) {
+  ASSERT_TRUE(shown.contains(key)) << key;
+  ASSERT_TRUE(shown[key].is_number()) << key << ": " << shown[key];
+  EXPECT_NEAR(shown[key].get<double>(), published, 0.005 * std::abs(published)) << key;
+}
+
+// J. W. Eischen, S. Deng, T. G. Clapp, "Finite-element modeling and control of
+// flexible fabric parts", IEEE CG&A, Oct. 1996, section "Fabric material
+// response": cotton twill, h = 0.0489 cm, w = 0.02665 gmf/cm^2, Kawabata
+// B = 0.589 gmf cm^2/cm (warp), I = 9.744e-6 cm^4 per 1 cm strip, and the
+// effective modulus E = B/I it uses as the membrane, with nu = 0.3.
+TEST(MaterialShowCli, CottonTwillLinearGivesBackEischenDengClapp1996) {
+  const double h_cm = 0.0489, w_gf_per_cm2 = 0.02665, b = 0.589, inertia_cm4 = 9.744e-6;
+  const double nu = 0.3;
+  const double e = b / inertia_cm4;  // gf/cm^2, the paper's 60450
+  const json shown = ShowJson("cotton-twill-linear");
+  ExpectFigure(shown, "thickness_mm", h_cm * 10);
+  ExpectFigure(shown, "weight_g_per_m2", w_gf_per_cm2 * 1e4);  // 1 gf/cm^2 of weight = 1e4 g/m^2
+  ExpectFigure(shown, "bending_rigidity_warp_gf_cm2_per_cm", b);
+  ExpectFigure(shown, "bending_rigidity_weft_gf_cm2_per_cm", b);  // one law, every direction
+  ExpectFigure(shown, "tensile_stiffness_warp_gf_per_cm", e * h_cm);
+  ExpectFigure(shown, "tensile_stiffness_weft_gf_per_cm", e * h_cm);
+  ExpectFigure(shown, "emt_warp_percent_at_500_gf_per_cm", 500 / (e * h_cm) * 100);
+  // An isotropic membrane: G = E/2(1 + nu), per width, per degree.
+  ExpectFigure(
+      shown, "shear_rigidity_gf_per_cm_deg", e / (2 * (1 + nu)) * h_cm * std::numbers::pi / 180);
+  ExpectFigure(shown, "poisson_ratio", nu);
+  EXPECT_EQ(shown["membrane"], "isotropic");
+  EXPECT_EQ(shown["bending_law_warp"], "linear");
+  EXPECT_NE(shown["source"].get<std::string>().find("Eischen"), std::string::npos);
+}
+
+// The nonlinear twill's B is its fitted law's mean slope over K = 0.5..1.5
+// 1/cm, M(1.5) - M(0.5) of the paper's fifth-order fit (gmf cm/cm, K in 1/cm).
+TEST(MaterialShowCli, ANonlinearLawShowsItsKawabataSlope) {
+  const double c[] = {1.33387, -2.23070, 2.36510, -1.08471, 0.17876};
+  auto moment = [&](double k) {
+    double m = 0, power = 1;
+    for (double ci : c) m += ci * (power *= k);
+    return m;
+  };
+  const json shown = ShowJson("cotton-twill");
+  EXPECT_EQ(shown["bending_law_warp"], "polynomial");
+  ExpectFigure(shown, "bending_rigidity_warp_gf_cm2_per_cm", moment(1.5) - moment(0.5));
+}
+
+TEST(MaterialShowCli, EveryShippedEntryShowsFiniteFigures) {
+  const test::CommandResult list = test::RunDrape("material list --json", test::Captured::kStdout);
+  ASSERT_EQ(list.exit_code, 0) << list.output;
+  for (const auto& entry : json::parse(list.output)) {
+    const std::string name = entry["library"].get<std::string>();
+    const json shown = ShowJson(name);
+    for (const auto& [key, value] : shown.items()) {
+      EXPECT_FALSE(value.is_null()) << name << ": " << key;
+      if (value.is_number()) {
+        EXPECT_TRUE(std::isfinite(value.get<double>())) << name << ": " << key;
+      }
+    }
+  }
+}
+
+TEST(MaterialShowCli, TextNamesTheTextileUnits) {
+  const test::CommandResult r = test::RunDrape("material show cotton-twill-linear");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* unit : {"mm", "g/m^2", "gf*cm^2/cm", "gf/(cm*deg)", "gf/cm", "EMT at 500 gf/cm"})
+    EXPECT_NE(r.output.find(unit), std::string::npos) << unit << " in\n" << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+}
+
+TEST(MaterialShowCli, AnUnknownNameListsTheLibraryAndExitsOne) {
+  const test::CommandResult r =
+      test::RunDrape("material show no-such-fabric --json", test::Captured::kStderr);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("drape material show: no library material 'no-such-fabric'"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("cotton-twill-linear"), std::string::npos) << r.output;
+  const test::CommandResult out =
+      test::RunDrape("material show no-such-fabric --json", test::Captured::kStdout);
+  EXPECT_EQ(out.output, "") << "nothing on stdout for a failure";
 }
 
 TEST(MaterialListCli, ListsTheShippedLibraryWithSources) {
