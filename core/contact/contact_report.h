@@ -8,6 +8,10 @@
 
 namespace drape {
 
+// A node's friction: none (no contact or no friction), sticking (below its
+// Coulomb limit) or sliding (at it).
+enum class SlipState : unsigned char { kNone = 0, kSticking = 1, kSliding = 2 };
+
 // What contact does in a state (scenes with obstacles).
 struct ContactReport {
   int nodes = 0;                                    // nodes in contact
@@ -23,6 +27,13 @@ struct ContactReport {
   Eigen::Vector3d stabilization_force = Eigen::Vector3d::Zero();  // Σ [N]
   double max_stabilization_force = 0;                             // largest nodal [N]
   std::vector<double> pressure;  // per node: contact force / tributary area [Pa]
+  // Friction: the obstacles' tangential force on the fabric [N] (part of
+  // `force`), the nodes sticking and sliding, and each node's state.
+  bool with_friction = false;  // μ > 0
+  Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();
+  int sticking = 0;
+  int sliding = 0;
+  std::vector<SlipState> friction;
 };
 
 }  // namespace drape

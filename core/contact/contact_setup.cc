@@ -6,6 +6,7 @@
 
 #include "core/model/obstacle_geometry.h"
 #include "core/model/scene_error.h"
+#include "core/model/string_format.h"
 
 namespace drape {
 
@@ -36,7 +37,16 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
   const double penalty =
       scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
   const double friction = scene.contact ? scene.contact->friction : 0.0;
-  auto contact = std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0, friction);
+  const double slip =
+      scene.contact && scene.contact->friction_slip ? *scene.contact->friction_slip : 0.0;
+  if (slip >= model.characteristic_length)
+    throw SceneError("contact.friction_slip",
+                     Format("the slip at which friction slides (%.4g mm) must be smaller than the "
+                            "part (its diagonal is %.4g mm)",
+                            1e3 * slip,
+                            1e3 * model.characteristic_length));
+  auto contact =
+      std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0, friction, slip);
   // A fabric that starts inside an obstacle has no meaningful first step.
   const auto inside = contact->Penetrations(model.reference, 1e-3 * model.thickness);
   if (!inside.empty()) {

@@ -8,9 +8,18 @@ namespace drape {
 namespace {
 
 constexpr double kTouching = 1e-9;  // of the half thickness
-// Slip kept from step to step, in units of the regularisation ε: 3ε gives
-// 3/√10 = 95 % of μ f_n.
-constexpr double kCarriedSlip = 3.0;
+// A node whose friction is this share of its Coulomb limit is sliding.
+constexpr double kSliding = 0.999;
+// A predicted state where nodes that had no friction carry this share of the
+// normal force asks for the predictor again, with their friction.
+constexpr double kFreshShare = 0.1;
+
+double MeanElementSize(const ShellModel& model) {
+  double area = 0;
+  for (const auto& element : model.elements)
+    for (const auto& gp : element.gauss) area += gp.area;
+  return std::sqrt(area / std::max(1, model.mesh.ElementCount()));
+}
 
 }  // namespace
 
@@ -18,16 +27,18 @@ NodeContact::NodeContact(const ShellModel& model,
                          std::vector<NamedObstacle> obstacles,
                          double penalty,
                          double stabilization,
-                         double friction)
+                         double friction,
+                         double friction_slip)
     : obstacles_(std::move(obstacles)),
       area_(model.NodeCount(), 0.0),
       penalty_(penalty),
       stabilization_(stabilization),
       half_thickness_(0.5 * model.thickness),
       friction_(friction),
+      friction_slip_(friction_slip > 0 ? friction_slip : DefaultFrictionSlip(model)),
       anchors_(model.reference.positions),
-      stick_(static_cast<size_t>(model.NodeCount()) * obstacles_.size(),
-             Eigen::Vector3d::Constant(std::nan(""))),
+      lag_(static_cast<size_t>(model.NodeCount()) * obstacles_.size()),
+      committed_(lag_),
       multiplier_(static_cast<size_t>(model.NodeCount()) * obstacles_.size(), 0.0) {
   // The consistent share ∫ N_I dA, as for the self-weight.
   for (int e = 0; e < model.mesh.ElementCount(); ++e)
@@ -66,12 +77,63 @@ DistanceQuery NodeContact::Query(const ShellState& state, int o, const Eigen::Ve
   return q;
 }
 
-Eigen::Vector3d NodeContact::FrictionAnchor(const ShellState& state, int i, int o) const {
-  // A node that came into contact during this step sticks from where it was
-  // at the last converged step. Anchors move with their obstacle.
-  const Eigen::Vector3d& stuck = stick_[static_cast<size_t>(i) * obstacles_.size() + o];
-  return stuck.hasNaN() ? Eigen::Vector3d(anchors_.row(i).transpose())
-                        : PlacementOf(state, o).ToWorld(stuck);
+template <typename F>
+void NodeContact::ForEachFriction(const ShellState& state, F&& f) const {
+  if (friction_ <= 0.0) return;
+  const size_t count = obstacles_.size();
+  for (size_t at = 0; at < lag_.size(); ++at) {
+    const FrictionLag& lag = lag_[at];
+    if (lag.normal_force <= 0.0) continue;
+    const int i = static_cast<int>(at / count), o = static_cast<int>(at % count);
+    const ObstaclePlacement p = PlacementOf(state, o);
+    f(i,
+      o,
+      EvaluateFriction(state.positions.row(i).transpose(),
+                       p.ToWorld(lag.anchor),
+                       p.rotation * lag.basis,
+                       friction_ * lag.normal_force,
+                       friction_slip_));
+  }
+}
+
+FrictionLag NodeContact::LagAt(const ShellState& state,
+                               size_t at,
+                               const FrictionLag& from,
+                               bool carry) const {
+  const int i = static_cast<int>(at / obstacles_.size());
+  const int o = static_cast<int>(at % obstacles_.size());
+  const ObstaclePlacement p = PlacementOf(state, o);
+  const Eigen::Vector3d x = state.positions.row(i).transpose();
+  const DistanceQuery q = Query(state, o, x);
+  const double g = q.distance - half_thickness_;
+  FrictionLag lag;
+  if (g > kTouching * half_thickness_ && multiplier_[at] - penalty_ * area_[i] * g <= 0.0)
+    return lag;
+  lag.normal_force = Respond(i, o, g, q).normal_force;
+  if (lag.normal_force <= 0.0) return lag;
+  const Eigen::Matrix<double, 3, 2> basis = TangentBasis(q.normal);
+  lag.basis = p.rotation.transpose() * basis;
+  if (from.normal_force <= 0.0) {
+    // A node that came into contact in this step sticks from where the last
+    // converged step left it; at a commit, from where it is now.
+    lag.anchor = p.ToScene(carry ? x : Eigen::Vector3d(anchors_.row(i).transpose()));
+  } else if (!carry) {
+    lag.anchor = from.anchor;
+  } else {
+    // The elastic part of the slip (at most ε) carries over, in the new
+    // tangent plane: a node that slid drags its anchor along.
+    const Eigen::Vector3d slip = basis * (basis.transpose() * (x - p.ToWorld(from.anchor)));
+    const double length = slip.norm();
+    lag.anchor = p.ToScene(
+        length > friction_slip_ ? Eigen::Vector3d(x - slip * (friction_slip_ / length)) : x - slip);
+  }
+  return lag;
+}
+
+std::vector<FrictionLag> NodeContact::LagsAt(const ShellState& state) const {
+  std::vector<FrictionLag> lags(lag_.size());
+  for (size_t at = 0; at < lag_.size(); ++at) lags[at] = LagAt(state, at, committed_[at], false);
+  return lags;
 }
 
 void NodeContact::AddObstacleRate(const ShellState& state,
@@ -95,35 +157,18 @@ void NodeContact::AddObstacleRate(const ShellState& state,
         });
 }
 
-NodeContact::NodeResponse NodeContact::Respond(const ShellState& state,
-                                               int i,
+NodeContact::NodeResponse NodeContact::Respond(int i,
                                                int o,
                                                double g,
-                                               const DistanceQuery& q,
-                                               const Eigen::Vector3d& x) const {
+                                               const DistanceQuery& q) const {
   const double k = penalty_ * area_[i];
-  const Eigen::Vector3d& n = q.normal;
-  NodeResponse r;
   // f_n = m − k A g (m: the augmented-Lagrangian multiplier), and
   // −∂(f_n n)/∂x = k A n nᵀ − f_n ∇∇d.
+  NodeResponse r;
   r.normal_force =
       std::max(0.0, multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] - k * g);
-  r.force = r.normal_force * n;
-  r.stiffness = k * n * n.transpose() - r.normal_force * q.hessian;
-  if (friction_ <= 0.0 || r.normal_force <= 0.0) return r;
-  const Eigen::Vector3d anchor = FrictionAnchor(state, i, o);
-  const Eigen::Matrix3d tangential = Eigen::Matrix3d::Identity() - n * n.transpose();
-  const Eigen::Vector3d slip = tangential * (x - anchor);
-  // Smooth Coulomb law f_t = −μ f_n s / √(|s|² + ε²) with ε = μ f_n / (k A):
-  // stiffness k A for small slip (stick), μ f_n for large (slide), and no
-  // switch between the two for Newton to chatter on.
-  const double limit = friction_ * r.normal_force;
-  const double epsilon = limit / k;
-  const double root = std::sqrt(slip.squaredNorm() + epsilon * epsilon);
-  r.force -= limit / root * slip;
-  // The dependence on f_n (unsymmetric, and indefinite in its symmetric
-  // part) is left out; what stays is positive semidefinite.
-  r.stiffness += limit / root * (tangential - slip * slip.transpose() / (root * root));
+  r.force = r.normal_force * q.normal;
+  r.stiffness = k * q.normal * q.normal.transpose() - r.normal_force * q.hessian;
   return r;
 }
 
@@ -134,15 +179,19 @@ void NodeContact::Add(const ShellState& state,
                       Eigen::VectorXd* rate) const {
   const int n = state.NodeCount();
   if (blocks) blocks->assign(n, Eigen::Matrix3d::Zero());
+  auto add = [&](int i, const Eigen::Vector3d& force, const Eigen::Matrix3d& stiffness) {
+    internal.segment<3>(kDofsPerNode * i) -= force;
+    if (blocks) (*blocks)[i] += stiffness;
+    if (velocity && rate)
+      rate->segment<3>(kDofsPerNode * i) += stiffness * velocity->segment<3>(kDofsPerNode * i);
+  };
   ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
-                   const NodeResponse r = Respond(state, i, o, g, q, x);
-                   internal.segment<3>(kDofsPerNode * i) -= r.force;
-                   if (blocks) (*blocks)[i] += r.stiffness;
-                   if (velocity && rate)
-                     rate->segment<3>(kDofsPerNode * i) +=
-                         r.stiffness * velocity->segment<3>(kDofsPerNode * i);
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
+                   const NodeResponse r = Respond(i, o, g, q);
+                   add(i, r.force, r.stiffness);
                  });
+  ForEachFriction(state,
+                  [&](int i, int, const FrictionResponse& f) { add(i, f.force, f.stiffness); });
   if (stabilization_ <= 0.0) return;
   for (int i = 0; i < n; ++i) {
     if (!held_.empty() && held_[i]) continue;
@@ -155,10 +204,11 @@ void NodeContact::Add(const ShellState& state,
 double NodeContact::Energy(const ShellState& state) const {
   double energy = 0;
   ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
-                   const double f_n = Respond(state, i, o, g, q, x).normal_force;
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
+                   const double f_n = Respond(i, o, g, q).normal_force;
                    energy += 0.5 * f_n * f_n / (penalty_ * area_[i]);
                  });
+  ForEachFriction(state, [&](int, int, const FrictionResponse& f) { energy += f.energy; });
   if (stabilization_ <= 0.0) return energy;
   for (int i = 0; i < state.NodeCount(); ++i)
     if (held_.empty() || !held_[i])
@@ -168,43 +218,57 @@ double NodeContact::Energy(const ShellState& state) const {
 
 void NodeContact::Augment(const ShellState& state) {
   ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
                    multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] =
-                       Respond(state, i, o, g, q, x).normal_force;
+                       Respond(i, o, g, q).normal_force;
                  });
 }
 
+double NodeContact::FrictionLagChange(const ShellState& state) const {
+  if (friction_ <= 0.0) return 0.0;
+  const std::vector<FrictionLag> now = LagsAt(state);
+  double change = 0, largest = 0;
+  for (size_t at = 0; at < lag_.size(); ++at) {
+    change = std::max(change, std::abs(now[at].normal_force - lag_[at].normal_force));
+    largest = std::max({largest, now[at].normal_force, lag_[at].normal_force});
+  }
+  return largest > 0 ? change / largest : 0.0;
+}
+
+void NodeContact::Relag(const ShellState& state) {
+  if (friction_ > 0.0) lag_ = LagsAt(state);
+}
+
+bool NodeContact::LagAtPrediction(const ShellState& predicted) {
+  if (friction_ <= 0.0) return false;
+  std::vector<FrictionLag> now = LagsAt(predicted);
+  double total = 0, fresh = 0;
+  for (size_t at = 0; at < lag_.size(); ++at) {
+    total += now[at].normal_force;
+    if (lag_[at].normal_force <= 0.0) fresh += now[at].normal_force;
+  }
+  lag_ = std::move(now);
+  return fresh > kFreshShare * total;
+}
+
 void NodeContact::Commit(const ShellState& state) {
-  anchors_ = state.positions;
   // Multipliers stay with the nodes that still push (no jump in force from
   // one step to the next); those that let go start again from zero.
   std::vector<double> kept(multiplier_.size(), 0.0);
   ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
                    const size_t at = static_cast<size_t>(i) * obstacles_.size() + o;
-                   if (Respond(state, i, o, g, q, x).normal_force > 0.0) kept[at] = multiplier_[at];
+                   if (Respond(i, o, g, q).normal_force > 0.0) kept[at] = multiplier_[at];
                  });
+  if (friction_ > 0.0) {
+    std::vector<FrictionLag> next(lag_.size());
+    for (size_t at = 0; at < lag_.size(); ++at)
+      next[at] = LagAt(state, at, lag_[at].normal_force > 0.0 ? lag_[at] : committed_[at], true);
+    lag_ = std::move(next);
+    committed_ = lag_;
+  }
   multiplier_ = std::move(kept);
-  if (friction_ <= 0.0) return;
-  std::vector<Eigen::Vector3d> next(stick_.size(), Eigen::Vector3d::Constant(std::nan("")));
-  ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
-                   const size_t at = static_cast<size_t>(i) * obstacles_.size() + o;
-                   // The slip carries over, so a node whose friction balances its load
-                   // stays put in the next step; but only its elastic part, at most
-                   // kCarriedSlip ε (95 % of the Coulomb force): a node that slid
-                   // drags its anchor along, and its friction turns round once it
-                   // moves back by about that much, as Coulomb friction does.
-                   const Eigen::Vector3d anchor = FrictionAnchor(state, i, o);
-                   const Eigen::Matrix3d tangential =
-                       Eigen::Matrix3d::Identity() - q.normal * q.normal.transpose();
-                   Eigen::Vector3d slip = tangential * (x - anchor);
-                   const double f_n = Respond(state, i, o, g, q, x).normal_force;
-                   const double carried = kCarriedSlip * friction_ * f_n / (penalty_ * area_[i]);
-                   if (slip.norm() > carried) slip *= carried / slip.norm();
-                   next[at] = PlacementOf(state, o).ToScene(x - slip);
-                 });
-  stick_ = std::move(next);
+  anchors_ = state.positions;
 }
 
 ContactReport NodeContact::Report(const ShellState& state) const {
@@ -213,14 +277,26 @@ ContactReport NodeContact::Report(const ShellState& state) const {
   std::vector<double> normal(state.NodeCount(), 0.0);
   std::vector<bool> touching(state.NodeCount(), false);
   ForEachContact(state,
-                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d& x) {
+                 [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
                    touching[i] = true;
-                   const NodeResponse response = Respond(state, i, o, g, q, x);
+                   const NodeResponse response = Respond(i, o, g, q);
                    force[i] += response.force;
                    normal[i] += response.normal_force;
                    r.max_penetration = std::max(r.max_penetration, std::max(-g, 0.0));
                  });
+  r.with_friction = friction_ > 0.0;
+  r.friction.assign(state.NodeCount(), SlipState::kNone);
+  ForEachFriction(state, [&](int i, int, const FrictionResponse& f) {
+    force[i] += f.force;
+    r.friction_force += f.force;
+    const SlipState s = f.mobilised >= kSliding ? SlipState::kSliding : SlipState::kSticking;
+    r.friction[i] = std::max(r.friction[i], s);
+  });
   r.nodes = static_cast<int>(std::count(touching.begin(), touching.end(), true));
+  r.sticking =
+      static_cast<int>(std::count(r.friction.begin(), r.friction.end(), SlipState::kSticking));
+  r.sliding =
+      static_cast<int>(std::count(r.friction.begin(), r.friction.end(), SlipState::kSliding));
   r.pressure.assign(state.NodeCount(), 0.0);
   for (int i = 0; i < state.NodeCount(); ++i) {
     r.force += force[i];
@@ -235,6 +311,17 @@ ContactReport NodeContact::Report(const ShellState& state) const {
       r.max_stabilization_force = std::max(r.max_stabilization_force, f.norm());
     }
   return r;
+}
+
+std::vector<std::string> NodeContact::TouchedObstacles(const ShellState& state) const {
+  std::vector<bool> touched(obstacles_.size(), false);
+  ForEachContact(state, [&](int, int o, double, const DistanceQuery&, const Eigen::Vector3d&) {
+    touched[o] = true;
+  });
+  std::vector<std::string> names;
+  for (size_t o = 0; o < obstacles_.size(); ++o)
+    if (touched[o]) names.push_back(obstacles_[o].name);
+  return names;
 }
 
 std::vector<std::string> NodeContact::Penetrations(const ShellState& state,
@@ -264,11 +351,13 @@ std::vector<std::string> NodeContact::Penetrations(const ShellState& state,
   return lines;
 }
 
+double DefaultFrictionSlip(const ShellModel& model) {
+  return 1e-3 * MeanElementSize(model);
+}
+
 double AutoPenalty(const ShellModel& model) {
-  double area = 0;
-  for (const auto& element : model.elements)
-    for (const auto& gp : element.gauss) area += gp.area;
-  const double element_area = area / std::max(1, model.mesh.ElementCount());
+  const double size = MeanElementSize(model);
+  const double element_area = size * size;
   // The membrane stiffness: the largest of D_m's diagonal (E h/(1 − ν²) for
   // an isotropic section).
   const double membrane = model.section.membrane.diagonal().maxCoeff();

@@ -8,14 +8,16 @@
 // multiplier m the normal force is f_n = m − k A g (≥ 0), and the tangent
 // k A n nᵀ − f_n ∇∇d.
 //
-// Coulomb friction (μ > 0), regularised: the tangential slip s of a node
-// from its anchor (where the last converged step left it, less the slip it
-// carried) gives the force −μ f_n s / √(|s|² + ε²), ε = μ f_n / (k A): a
-// stiff spring for small slip, the Coulomb limit for large, smooth in
-// between. A node loaded below the limit creeps by less than ε and stays; one
-// loaded above it slides. Only the elastic part of the slip (at most 3ε)
-// carries over to the next step, so a node that slid drags its anchor along
-// and its friction turns round when it moves back.
+// Coulomb friction (μ > 0): the lagged potential of lagged_friction.h. Each
+// node in contact keeps its normal force, tangent plane and anchor from the
+// last converged step (its lag); within a step friction is then a potential
+// in the node's position, with a symmetric, positive semidefinite tangent,
+// the same for path following and for energy minimisation. Re-lagging at
+// the converged state (Relag) makes the normal force Coulomb's. The anchor
+// keeps the node's elastic slip (at most ε, where friction turns from stick
+// to slide) from step to step, so a node whose friction balances its load
+// stays put in the next step, and one that slid turns its friction round
+// once it moves back by 2ε, as Coulomb friction does.
 //
 // Scenes held only by contact (a sheet on a frictionless table, a strip hung
 // over a rod) have rigid motions that nothing resists; for those, weak springs
@@ -31,12 +33,21 @@
 #include <vector>
 
 #include "core/contact/contact_report.h"
+#include "core/contact/lagged_friction.h"
 #include "core/fe/shell_model.h"
 #include "core/fe/shell_state.h"
 #include "core/fe/stage_loading.h"
 #include "core/model/obstacle_geometry.h"
 
 namespace drape {
+
+// A node's friction as the last converged step (or a re-lag) left it, in
+// the obstacle's own frame (it moves with the obstacle).
+struct FrictionLag {
+  double normal_force = 0;  // λ_n [N]; 0: no friction
+  Eigen::Matrix<double, 3, 2> basis = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
+};
 
 struct NamedObstacle {
   std::string name;
@@ -46,12 +57,14 @@ struct NamedObstacle {
 class NodeContact {
  public:
   // `penalty`: k per area [N/m³]; `stabilization`: spring per node [N/m], 0
-  // for none.
+  // for none; `friction`: μ; `friction_slip`: ε [m], the slip at which a
+  // node turns from sticking to sliding (0: DefaultFrictionSlip).
   NodeContact(const ShellModel& model,
               std::vector<NamedObstacle> obstacles,
               double penalty,
               double stabilization,
-              double friction = 0.0);
+              double friction = 0.0,
+              double friction_slip = 0.0);
 
   // Adds ∂E/∂x of contact and stabilisation to `internal` (5 per node) and,
   // with `blocks`, each node's 3×3 translational tangent block (row-major).
@@ -63,14 +76,37 @@ class NodeContact {
            const Eigen::VectorXd* velocity,
            Eigen::VectorXd* rate) const;
 
-  // The energy whose gradient Add's normal and stabilisation forces are [J]:
-  // ½ k A (m/(kA) − g)² per node pressed in (m the multiplier), ½ s |x − a|²
-  // per spring. Friction dissipates; it has none.
+  // The energy whose gradient Add's forces are [J]: ½ k A (m/(kA) − g)² per
+  // node pressed in (m the multiplier), ½ s |x − a|² per spring, and the
+  // lagged friction potential μ λ_n f₀(|u|) per lagged contact.
   double Energy(const ShellState& state) const;
 
-  // The stabilisation springs and the friction anchors start again from
+  // The stabilisation springs and the friction lags start again from
   // `state` (a converged step).
   void Commit(const ShellState& state);
+
+  // Friction's lag moved to `state`: the normal forces and tangent planes it
+  // has, the anchors of the last commit (a node that came into contact
+  // since, anchored where the last converged step left it).
+  // FrictionLagChange: the largest change of a node's normal force that
+  // Relag would make, over the largest (0 without friction or contact).
+  double FrictionLagChange(const ShellState& state) const;
+  void Relag(const ShellState& state);
+  // Relag at a step's predicted state; true when nodes that had no friction
+  // in the lag carry a tenth of the normal force there (the predictor, made
+  // without their friction, slid them freely: it should be made again).
+  bool LagAtPrediction(const ShellState& predicted);
+
+  // What a pass of the solver may undo: multipliers and friction lags.
+  struct Memory {
+    std::vector<double> multipliers;
+    std::vector<FrictionLag> lags;
+  };
+  Memory memory() const { return {multiplier_, lag_}; }
+  void Restore(Memory m) {
+    multiplier_ = std::move(m.multipliers);
+    lag_ = std::move(m.lags);
+  }
   // `held[i]`: node i's position is prescribed (a support or a gripper); it
   // gets no spring, which would resist nothing and only add its force to
   // the node's reaction. Empty: every node gets one.
@@ -93,6 +129,8 @@ class NodeContact {
                        Eigen::VectorXd& rate) const;
 
   ContactReport Report(const ShellState& state) const;
+  // The names of the obstacles that some node touches, in scene order.
+  std::vector<std::string> TouchedObstacles(const ShellState& state) const;
   // Nodes deeper than `depth` inside an obstacle, deepest first: "node N is
   // X mm inside 'table'" lines, for the start of a run.
   // `among`: only these nodes (empty: every node).
@@ -104,6 +142,7 @@ class NodeContact {
   double stabilization() const { return stabilization_; }
   double half_thickness() const { return half_thickness_; }
   double friction() const { return friction_; }
+  double friction_slip() const { return friction_slip_; }
   const std::vector<double>& nodal_area() const { return area_; }
 
  private:
@@ -111,8 +150,8 @@ class NodeContact {
   template <typename F>
   void ForEachContact(const ShellState& state, F&& f) const;
 
-  // The force obstacle `o` exerts on node `i` (normal and friction), its
-  // normal part's magnitude, and the tangent −∂force/∂x (symmetric part).
+  // The normal force obstacle `o` exerts on node `i`, its magnitude, and
+  // the tangent −∂force/∂x.
   struct NodeResponse {
     Eigen::Vector3d force;
     double normal_force = 0;
@@ -121,13 +160,15 @@ class NodeContact {
   static ObstaclePlacement PlacementOf(const ShellState& state, int o);
   // Obstacle o's distance at world x, with it where `state` has placed it.
   DistanceQuery Query(const ShellState& state, int o, const Eigen::Vector3d& x) const;
-  Eigen::Vector3d FrictionAnchor(const ShellState& state, int i, int o) const;
-  NodeResponse Respond(const ShellState& state,
-                       int i,
-                       int o,
-                       double g,
-                       const DistanceQuery& q,
-                       const Eigen::Vector3d& x) const;
+  // Calls f(node, obstacle, response) for every node with a friction lag.
+  template <typename F>
+  void ForEachFriction(const ShellState& state, F&& f) const;
+  // The lag of contact `at` (node · obstacles + obstacle) at `state`, its
+  // anchor from `from`; `carry`: the elastic slip from that anchor carries
+  // over (a commit) instead of the anchor itself.
+  FrictionLag LagAt(const ShellState& state, size_t at, const FrictionLag& from, bool carry) const;
+  std::vector<FrictionLag> LagsAt(const ShellState& state) const;
+  NodeResponse Respond(int i, int o, double g, const DistanceQuery& q) const;
 
   std::vector<NamedObstacle> obstacles_;
   std::vector<double> area_;  // tributary reference area per node [m²]
@@ -136,13 +177,19 @@ class NodeContact {
   std::vector<bool> held_;  // nodes without a spring
   double half_thickness_;
   double friction_;
+  double friction_slip_;     // ε [m]
   Eigen::MatrixXd anchors_;  // node positions of the last converged step
-  // Friction anchors per node and obstacle (index i·obstacles + o); NaN
-  // where the node was not in contact at the last commit.
-  std::vector<Eigen::Vector3d> stick_;
+  // Friction lags per node and obstacle (index i·obstacles + o); a zero
+  // normal force where the node has none.
+  std::vector<FrictionLag> lag_;
+  std::vector<FrictionLag> committed_;  // lag_ at the last commit
   // Augmented-Lagrangian normal force per node and obstacle [N] (same index).
   std::vector<double> multiplier_;
 };
+
+// ε for `contact.friction_slip` left out: 1e-3 of the mean element size, so
+// a sticking node creeps far less than the mesh resolves [m].
+double DefaultFrictionSlip(const ShellModel& model);
 
 // k per area for `contact.penalty: "auto"`: the membrane stiffness of the
 // section over the square of the mean element size, E h / ((1 − ν²) ℓ²)

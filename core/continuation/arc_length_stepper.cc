@@ -107,15 +107,21 @@ ContinuationStep ArcLengthStepper::StepTo(ShellState& state,
                                           const CancellationToken* cancel) {
   ContinuationStep out;
   const DofMap& dofs = system_.dofs();
+  const ShellState start = prediction_hook_ ? state : ShellState{};
   // Tangent predictor: the linear response to the change of λ.
-  const Eigen::VectorXd f0 = AssembleWithRate(state, lambda);
-  system_.Factorize();
-  const Eigen::VectorXd u_i = system_.Solve(f0);
+  Eigen::VectorXd f0, u_i;
   const double delta = target - lambda;
-  Eigen::VectorXd predictor = dofs.Expand(delta * u_i);
-  if (const double t = system_.StepBound(state, predictor); t < 1) predictor *= t;
-  ApplyIncrement(predictor, state);
-  loading_.Place(target, state);
+  for (bool again = false;; again = true) {
+    f0 = AssembleWithRate(state, lambda);
+    system_.Factorize();
+    u_i = system_.Solve(f0);
+    Eigen::VectorXd predictor = dofs.Expand(delta * u_i);
+    if (const double t = system_.StepBound(state, predictor); t < 1) predictor *= t;
+    ApplyIncrement(predictor, state);
+    loading_.Place(target, state);
+    if (!PredictAgain(state, again)) break;
+    state = start;
+  }
   NewtonSettings settings = newton_;
   settings.residual_reference = std::abs(delta) * f0.norm();
   NewtonOutcome newton = SolveEquilibrium(
@@ -140,8 +146,10 @@ ContinuationStep ArcLengthStepper::StepTo(ShellState& state,
 std::optional<ContinuationStep> ArcLengthStepper::Predict(ShellState& state,
                                                           const StepRequest& request,
                                                           SphereStep& sphere,
-                                                          const CancellationToken* cancel) {
+                                                          const CancellationToken* cancel,
+                                                          bool again) {
   const DofMap& dofs = system_.dofs();
+  const ShellState start = prediction_hook_ ? state : ShellState{};
   double lambda = request.lambda;
   const PathDirection* previous = request.previous;
   const double speed = loading_.PrescribedSpeed(lambda, state);
@@ -180,6 +188,10 @@ std::optional<ContinuationStep> ArcLengthStepper::Predict(ShellState& state,
   ApplyIncrement(dofs.Expand(dl * u_i), state);
   lambda += dl;
   loading_.Place(lambda, state);
+  if (PredictAgain(state, again)) {
+    state = start;
+    return Predict(state, request, sphere, cancel, /*again=*/true);
+  }
   sphere.lambda = lambda;
   sphere.target = request.target;
   sphere.ds = ds;

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,6 +75,14 @@ class ArcLengthStepper {
   // back, and forward would only meet the same bifurcation again.
   void SetDefiniteGoesForward(bool on) { definite_goes_forward_ = on; }
 
+  // Called at each predicted state (positions moved, λ placed), before the
+  // corrector: forces that depend on the path's history (friction's lagged
+  // normal force) take their values there. True when they changed so much
+  // that the predictor itself, made with the old values, is wrong: it is
+  // made again once from the step's start.
+  using PredictionHook = std::function<bool(const ShellState& predicted)>;
+  void SetPredictionHook(PredictionHook hook) { prediction_hook_ = std::move(hook); }
+
   // A load-controlled step to λ = target (tangent predictor, then Newton).
   ContinuationStep StepTo(ShellState& state,
                           double lambda,
@@ -125,7 +134,13 @@ class ArcLengthStepper {
   std::optional<ContinuationStep> Predict(ShellState& state,
                                           const StepRequest& request,
                                           SphereStep& sphere,
-                                          const CancellationToken* cancel);
+                                          const CancellationToken* cancel,
+                                          bool again = false);
+  // The prediction hook at `predicted`; true when the predictor must be
+  // made again (and `again` is false).
+  bool PredictAgain(const ShellState& predicted, bool again) const {
+    return prediction_hook_ && prediction_hook_(predicted) && !again;
+  }
   // The corrector on the sphere (bordered Newton, δλ from the sphere's
   // quadratic). `overshot`: it converged past the stage's end.
   NewtonOutcome CorrectOnSphere(ShellState& state,
@@ -157,6 +172,7 @@ class ArcLengthStepper {
   const StageLoading& loading_;
   NewtonSettings newton_;
   double psi_;
+  PredictionHook prediction_hook_;
   bool definite_goes_forward_ = true;
   Eigen::VectorXd translation_mask_;  // 1 on free translation DOFs, 0 on rotations
 };

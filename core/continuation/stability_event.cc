@@ -22,6 +22,8 @@ const char* ToString(SnapTrigger trigger) {
       return "bifurcation";
     case SnapTrigger::kStart:
       return "start";
+    case SnapTrigger::kSliding:
+      return "sliding";
   }
   return "?";
 }

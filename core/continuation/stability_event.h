@@ -20,10 +20,13 @@ enum class Branch {
 // What a part snapped at: a limit point, a bifurcation with no stable
 // branch, or a stage's start where it cannot carry the first increment (a
 // mechanism: a sheet held at two corners swings about the line through them).
-enum class SnapTrigger { kLimit, kBifurcation, kStart };
+// kSliding: a part held only by contact whose every node in contact slides
+// (its stabilisation springs carry what friction cannot), or that would not
+// settle at a stage's end.
+enum class SnapTrigger { kLimit, kBifurcation, kStart, kSliding };
 const char* ToString(StabilityKind kind);   // "limit", "bifurcation", "snap"
 const char* ToString(Branch branch);        // "fundamental", "stable", "none"
-const char* ToString(SnapTrigger trigger);  // "limit", "bifurcation", "start"
+const char* ToString(SnapTrigger trigger);  // "limit", "bifurcation", "start", "sliding"
 
 // A change in the number of negative pivots between two converged steps: the
 // path crossed a limit or bifurcation point.

@@ -161,6 +161,10 @@ void ResultWriter::AddStep(const StepState& step) {
     s["contact"] = {{"nodes", step.contact->nodes},
                     {"force", Vector(step.contact->force)},
                     {"max_penetration", step.contact->max_penetration}};
+    if (step.contact->with_friction)
+      s["contact"]["friction"] = {{"sticking", step.contact->sticking},
+                                  {"sliding", step.contact->sliding},
+                                  {"force", Vector(step.contact->friction_force)}};
     if (step.contact->max_stabilization_force > 0)
       s["contact"]["max_stabilization_force"] = step.contact->max_stabilization_force;
     if (step.contact->penetration_target > 0) {

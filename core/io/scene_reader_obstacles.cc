@@ -3,6 +3,7 @@
 #include "core/io/scene_parser.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace drape {
 namespace {
@@ -74,7 +75,7 @@ Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
 }
 
 Contact SceneParser::ReadContact(const JsonCursor& c) {
-  c.ExpectObject({"penalty", "friction", "self", "thickness"});
+  c.ExpectObject({"penalty", "friction", "friction_slip", "self", "thickness"});
   Contact contact;
   if (auto p = c.Find("penalty")) {
     if (p->value().is_string() && p->value().get<std::string>() == "auto")
@@ -84,8 +85,10 @@ Contact SceneParser::ReadContact(const JsonCursor& c) {
   }
   if (auto f = c.Find("friction")) {
     contact.friction = f->Number();
+    if (!std::isfinite(contact.friction)) f->Fail("a friction coefficient must be a finite number");
     if (contact.friction < 0) f->Fail("a friction coefficient must not be negative");
   }
+  if (auto e = c.Find("friction_slip")) contact.friction_slip = e->PositiveQuantity(dim::kLength);
   if (auto s = c.Find("self")) contact.self = s->Boolean();
   if (auto t = c.Find("thickness")) contact.thickness = t->PositiveQuantity(dim::kLength);
   return contact;

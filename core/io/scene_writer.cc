@@ -227,6 +227,7 @@ nlohmann::ordered_json SceneToJson(const Scene& scene) {
     json contact{{"friction", scene.contact->friction}};
     contact["self"] = scene.contact->self;
     if (scene.contact->thickness) contact["thickness"] = *scene.contact->thickness;
+    if (scene.contact->friction_slip) contact["friction_slip"] = *scene.contact->friction_slip;
     if (scene.contact->penalty)
       contact["penalty"] = *scene.contact->penalty;
     else

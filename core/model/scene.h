@@ -217,6 +217,9 @@ struct Obstacle {
 struct Contact {
   std::optional<double> penalty;  // [N/m³] per unit area; absent = "auto"
   double friction = 0;            // Coulomb μ
+  // ε: the slip at which friction turns from sticking to sliding [m];
+  // absent: DefaultFrictionSlip (core/contact/node_contact.h).
+  std::optional<double> friction_slip;
   // Self-contact: the fabric's layers kept `thickness` apart (default the
   // material's) by a barrier (core/contact/self_contact.h).
   bool self = true;

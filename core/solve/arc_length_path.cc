@@ -109,7 +109,7 @@ StageOutcome RunArcLength(SolveRun& run,
                           StageSummary& stage) {
   const Stage& spec = run.scene.stages[index];
   const SolverOptions& options = run.options;
-  ArcLengthStepper stepper(*run.system, loading, run.Newton(), run.Psi());
+  ArcLengthStepper stepper = run.Stepper(loading);
   const StepPolicy policy = options.Stepping();
   PathPosition at;
   int cuts_in_a_row = 0;
@@ -128,6 +128,14 @@ StageOutcome RunArcLength(SolveRun& run,
     if (at.max_arc_length == 0)
       at.max_arc_length = step.arc_length * options.max_increment / spec.initial_increment;
     if (step.status != NewtonOutcome::Status::kConverged) {
+      run.state = saved;
+      if (StageOutcome o = AfterFailedStep(run, index, loading, step, at, cuts_in_a_row, stage);
+          !o.GoesOn())
+        return o;
+      continue;
+    }
+    Augmentation passes;
+    if (!PassContact(run, step.landed ? 1.0 : step.lambda, loading, step, passes)) {
       run.state = saved;
       if (StageOutcome o = AfterFailedStep(run, index, loading, step, at, cuts_in_a_row, stage);
           !o.GoesOn())
@@ -167,10 +175,24 @@ StageOutcome RunArcLength(SolveRun& run,
     ++stage.steps;
     stage.final_lambda = at.lambda;
     run.stage_path_length += step.arc_length;
-    if (StageOutcome o = RecordConvergedStep(
-            run, {index, stage.steps, at.lambda}, loading, step, event ? &*event : nullptr);
+    if (StageOutcome o = RecordConvergedStep(run,
+                                             {index, stage.steps, at.lambda},
+                                             loading,
+                                             step,
+                                             event ? &*event : nullptr,
+                                             &passes);
         !o.GoesOn())
       return o;
+    if (run.slides_as_a_whole) {
+      // Friction cannot hold the part here: find where it comes to rest.
+      PathPoint landed;
+      const SnapStart start{
+          PathPoint{run.state, at.lambda, step}, run.state, at.lambda, SnapTrigger::kSliding, 0};
+      if (StageOutcome o = Snap(run, index, loading, start, false, stage, landed); !o.GoesOn())
+        return o;
+      at.GoOnAfterSnap(landed.lambda);
+      continue;
+    }
     at.arc_length = std::min(policy.Next(step.arc_length, step.iterations), at.max_arc_length);
   }
   if (at.lowest < -1e-6) run.summary.warnings.push_back(ReversedLoadWarning(spec, at.lowest));

@@ -1,8 +1,9 @@
-// Augmented-Lagrangian passes at a converged step (contact with the "auto"
-// penalty): each pass moves the multipliers by the penalty force and solves
-// again at the same λ, until the deepest node is within
-// options.penetration_tolerance of the thickness or options.max_augmentations
-// passes are done.
+// Contact passes at a converged step: with the "auto" penalty each pass
+// moves the multipliers by the penalty force (augmented Lagrangian), with
+// friction it re-lags the normal forces and tangent planes, and solves again
+// at the same λ, until the deepest node is within
+// options.penetration_tolerance of the thickness and friction's lag has
+// stopped changing, or options.max_augmentations passes are done.
 #pragma once
 
 #include <string>

@@ -4,19 +4,23 @@
 #include <string>
 
 #include "core/fe/element_fields.h"
+#include "core/model/string_format.h"
 #include "core/solve/contact_augmentation.h"
 
 namespace drape {
 namespace {
 
+// A node's normal force this far (of the largest) from its lag leaves the
+// step unsettled.
+constexpr double kUnsettledLag = 1e-2;
+
 // The contact report of the state, with what augmentation did.
 ContactReport ReportContact(const SolveRun& run, const Augmentation& augmentation) {
   ContactReport report = run.contact->Report(run.state);
-  if (run.augment_contact) {
+  report.augmentation_passes = augmentation.passes;
+  report.augmentation_shortfall = augmentation.shortfall;
+  if (run.augment_contact)
     report.penetration_target = run.options.penetration_tolerance * run.model.thickness;
-    report.augmentation_passes = augmentation.passes;
-    report.augmentation_shortfall = augmentation.shortfall;
-  }
   return report;
 }
 
@@ -50,14 +54,35 @@ std::vector<NamedVector> Reactions(const ShellModel& model,
   return reactions;
 }
 
+bool PassContact(SolveRun& run,
+                 double lambda,
+                 const StageLoading& loading,
+                 ContinuationStep& step,
+                 Augmentation& passes) {
+  if (!run.contact || !(run.augment_contact || run.contact->friction() > 0)) return true;
+  NodeContact::Memory memory = run.contact->memory();
+  passes = AugmentContact(run, lambda, loading, step);
+  const double change = run.contact->FrictionLagChange(run.state);
+  if (change <= kUnsettledLag) return true;
+  run.contact->Restore(std::move(memory));
+  step.status = NewtonOutcome::Status::kDiverged;
+  step.reason = Format("friction's normal forces did not settle (still %.2g %% off: %s)",
+                       100 * change,
+                       passes.shortfall.c_str());
+  return false;
+}
+
 StageOutcome RecordConvergedStep(SolveRun& run,
                                  const StepPlace& place,
                                  const StageLoading& loading,
                                  const ContinuationStep& converged,
-                                 const StabilityEvent* classified) {
+                                 const StabilityEvent* classified,
+                                 const Augmentation* passes) {
   ContinuationStep result = converged;
   Augmentation augmentation;
-  if (run.contact && run.augment_contact)
+  if (passes)
+    augmentation = *passes;
+  else if (run.contact && (run.augment_contact || run.contact->friction() > 0))
     augmentation = AugmentContact(run, place.lambda, loading, result);
   const std::string& name = run.scene.stages[place.stage].name;
   // The steppers refuse non-finite trial states; this keeps the promise that
@@ -87,6 +112,8 @@ StageOutcome RecordConvergedStep(SolveRun& run,
   if (run.contact) {
     step.contact = ReportContact(run, augmentation);
     run.last_stabilization_force = step.contact->max_stabilization_force;
+    run.slides_as_a_whole = run.contact->stabilization() > 0 && step.contact->sliding > 0 &&
+                            step.contact->sticking == 0;
     run.contact->Commit(run.state);
   }
   if (run.layers) MeasureLayers(run, step);

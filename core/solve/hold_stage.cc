@@ -2,6 +2,7 @@
 // stage held only by contact in equilibrium without its stabilisation springs.
 #include "core/solve/converged_step.h"
 #include "core/solve/run_diagnostics.h"
+#include "core/solve/snap_passage.h"
 #include "core/solve/stage_runner.h"
 
 namespace drape {
@@ -10,6 +11,20 @@ namespace {
 // Each settle pass shrinks the springs' force by about k_s / k of the
 // structure; a few passes reach round-off of the weight.
 constexpr int kMaxSettlePasses = 5;
+// A pass that leaves the springs more than this share of their force did
+// not settle the part: it slid on them (friction cannot hold it).
+constexpr double kSliding = 0.5;
+
+// The part goes to the rest state the minimiser finds without the springs,
+// or the run says that nothing holds it.
+StageOutcome SettleByJump(SolveRun& run,
+                          int index,
+                          const StageLoading& loading,
+                          StageSummary& stage) {
+  const SnapStart start{PathPoint{run.state, 1.0, {}}, run.state, 1.0, SnapTrigger::kSliding, 0};
+  PathPoint landed;
+  return Snap(run, index, loading, start, /*record_before=*/false, stage, landed);
+}
 
 }  // namespace
 
@@ -25,8 +40,12 @@ StageOutcome RunHold(SolveRun& run, int index, const StageLoading& loading, Stag
 StageOutcome Settle(SolveRun& run, int index, const StageLoading& loading, StageSummary& stage) {
   // Stop at round-off of the weight.
   const double negligible = 1e-12 * run.model.total_weight.norm();
+  double previous = run.last_stabilization_force;
   for (int pass = 0; pass < kMaxSettlePasses; ++pass) {
     if (run.last_stabilization_force <= negligible) return StageOutcome::On();
+    if (pass > 0 && run.last_stabilization_force > kSliding * previous)
+      return SettleByJump(run, index, loading, stage);
+    previous = run.last_stabilization_force;
     const NewtonOutcome newton = run.SolveAtFixedLambda(1.0, loading);
     if (StageOutcome o =
             run.FixedLambdaOutcome(newton, stage, "did not settle without its stabilisation");

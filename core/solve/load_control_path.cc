@@ -28,7 +28,7 @@ StageOutcome RunLoadControl(SolveRun& run,
                             StageSummary& stage) {
   const Stage& spec = run.scene.stages[index];
   const SolverOptions& options = run.options;
-  ArcLengthStepper stepper(*run.system, loading, run.Newton(), run.Psi());
+  ArcLengthStepper stepper = run.Stepper(loading);
   const StepPolicy policy = options.Stepping();
   double lambda = 0;
   double increment = spec.initial_increment;

@@ -52,10 +52,41 @@ Jump JumpFrom(SolveRun& run, const StageLoading& loading, const SnapStart& start
   return jump;
 }
 
+// Why the part jumps, as the message's clause before "at λ = …".
+const char* SnapCause(SnapTrigger trigger) {
+  switch (trigger) {
+    case SnapTrigger::kStart:
+      return "where it starts it cannot carry its first increment, so";
+    case SnapTrigger::kLimit:
+      return "past a limit point";
+    case SnapTrigger::kBifurcation:
+      return "past a bifurcation point";
+    case SnapTrigger::kSliding:
+      return "every node in contact slides, held only by the stabilisation springs, so";
+  }
+  return "?";
+}
+
 // What to change when a jump finds no rest state.
-std::string SnapAdvice(SnapTrigger trigger, const MinimiserOutcome& outcome) {
-  if (outcome.unheld)
-    return ". Hold the part (supports, grippers) or let friction hold it (contact.friction)";
+std::string SnapAdvice(const SolveRun& run,
+                       const ShellState& before,
+                       SnapTrigger trigger,
+                       const MinimiserOutcome& outcome) {
+  if (outcome.unheld) {
+    std::string on;
+    if (run.contact)
+      for (const std::string& name : run.contact->TouchedObstacles(before))
+        on += (on.empty() ? "" : ", ") + ("'" + name + "'");
+    const std::string slides = on.empty() ? "" : "; it slides off " + on;
+    if (run.contact && run.contact->friction() > 0)
+      return Format(
+          "%s. Hold the part (supports, grippers) or give it more friction "
+          "(contact.friction is %.3g)",
+          slides.c_str(),
+          run.contact->friction());
+    return slides +
+           ". Hold the part (supports, grippers) or let friction hold it (contact.friction)";
+  }
   if (trigger == SnapTrigger::kStart)
     return ". Hold the part more (supports, grippers) or give it bending (material.bending)";
   return ". solver.branching: fundamental follows the unstable path instead";
@@ -81,17 +112,15 @@ StageOutcome RecordSnap(SolveRun& run,
       return o;
   if (newton.status != NewtonOutcome::Status::kConverged)
     return StageOutcome::Stop(
-        Termination::kNoStableBranch,
+        jump.outcome.unheld ? Termination::kUnheld : Termination::kNoStableBranch,
         Format("stage '%s' (stages[%d]): %s at λ = %.6g the part snaps, but no rest state was "
                "found for it to land in: ",
                name.c_str(),
                index,
-               start.trigger == SnapTrigger::kStart
-                   ? "where it starts it cannot carry its first increment, so"
-                   : (start.trigger == SnapTrigger::kLimit ? "past a limit point"
-                                                           : "past a bifurcation point"),
+               SnapCause(start.trigger),
                start.lambda) +
-            newton.reason + SnapAdvice(start.trigger, jump.outcome) + ContactHint(run));
+            newton.reason + SnapAdvice(run, start.before.state, start.trigger, jump.outcome) +
+            ContactHint(run));
   StabilityEvent event;
   event.kind = StabilityKind::kSnap;
   event.trigger = start.trigger;
@@ -157,7 +186,8 @@ StageOutcome SnapFromStart(SolveRun& run,
         stuck.termination,
         stuck.message + "; nor does it come to rest at λ = " + Format("%.6g", lambda) + " (" +
             jump.outcome.newton.reason + ")" +
-            (jump.outcome.unheld ? SnapAdvice(start.trigger, jump.outcome) : std::string()));
+            (jump.outcome.unheld ? SnapAdvice(run, start.before.state, start.trigger, jump.outcome)
+                                 : std::string()));
   }
   return RecordSnap(run, index, loading, start, jump, /*record_before=*/false, stage, landed);
 }

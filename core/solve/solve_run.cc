@@ -50,6 +50,14 @@ std::vector<HeldGripper> SolveRun::Holds(const Stage& stage) const {
   return holds;
 }
 
+ArcLengthStepper SolveRun::Stepper(const StageLoading& loading) {
+  ArcLengthStepper stepper(*system, loading, Newton(), Psi());
+  if (contact && contact->friction() > 0)
+    stepper.SetPredictionHook(
+        [c = contact.get()](const ShellState& predicted) { return c->LagAtPrediction(predicted); });
+  return stepper;
+}
+
 NewtonSettings SolveRun::Newton() const {
   NewtonSettings n;
   n.tolerance = options.tolerance;

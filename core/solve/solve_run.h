@@ -15,6 +15,7 @@
 #include "core/contact/node_contact.h"
 #include "core/contact/self_contact.h"
 #include "core/contact/self_proximity.h"
+#include "core/continuation/arc_length_stepper.h"
 #include "core/continuation/equilibrium_system.h"
 #include "core/continuation/newton_corrector.h"
 #include "core/fe/dof_map.h"
@@ -60,6 +61,9 @@ struct SolveRun {
   NewtonSettings Newton() const;
   // ψ of the arc-length constraint [m].
   double Psi() const { return options.psi > 0 ? options.psi : model.characteristic_length; }
+  // A stepper for this run's system: its Newton settings and ψ, friction
+  // lagged at each predicted state.
+  ArcLengthStepper Stepper(const StageLoading& loading);
   // Newton at a fixed λ from the present state, judged against the force
   // level (no load is added): a hold, a settle pass, an augmentation pass.
   // `max_iterations` > 0 overrides the options' limit.
@@ -86,6 +90,9 @@ struct SolveRun {
   // "auto" penalty: penetration held to options.penetration_tolerance by
   // augmented-Lagrangian passes. A penalty the user set is used as given.
   bool augment_contact = false;
+  // The last converged step had every node in contact sliding and nothing
+  // but the stabilisation springs holding the part: it is not at rest.
+  bool slides_as_a_whole = false;
   // The DOF map of the current stage, and the system built on it.
   std::unique_ptr<DofMap> dofs;
   std::unique_ptr<EquilibriumSystem> system;

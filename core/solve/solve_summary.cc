@@ -5,6 +5,23 @@
 #include <sstream>
 
 namespace drape {
+namespace {
+
+const char* SnapPlace(SnapTrigger trigger) {
+  switch (trigger) {
+    case SnapTrigger::kStart:
+      return "stage's start";
+    case SnapTrigger::kLimit:
+      return "limit point";
+    case SnapTrigger::kBifurcation:
+      return "bifurcation";
+    case SnapTrigger::kSliding:
+      return "state where every node in contact slid, held only by the stabilisation springs";
+  }
+  return "?";
+}
+
+}  // namespace
 
 const char* ToString(Termination t) {
   switch (t) {
@@ -28,6 +45,8 @@ const char* ToString(Termination t) {
       return "numerical failure";
     case Termination::kNoStableBranch:
       return "no branch past a bifurcation";
+    case Termination::kUnheld:
+      return "nothing holds the part";
     case Termination::kTimeLimit:
       return "time limit";
   }
@@ -45,9 +64,7 @@ std::string Describe(const StabilityEvent& e) {
                   e.stage,
                   e.step,
                   e.lambda,
-                  e.trigger == SnapTrigger::kStart
-                      ? "stage's start"
-                      : (e.trigger == SnapTrigger::kLimit ? "limit point" : "bifurcation"),
+                  SnapPlace(e.trigger),
                   e.negative_pivots_before,
                   e.negative_pivots_fundamental,
                   e.energy_released,

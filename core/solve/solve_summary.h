@@ -23,6 +23,7 @@ enum class Termination {
   kIllPosed,           // a stage cannot be solved as posed (e.g. nothing holds the fabric)
   kNumericalFailure,   // the linear algebra failed (e.g. out of memory in the factorisation)
   kNoStableBranch,     // a bifurcation was crossed and no secondary branch could be followed
+  kUnheld,             // the part would jump, and nothing holds it: it slides or falls away
   kTimeLimit,          // the run took longer than SolverOptions::max_wall_s
 };
 
