@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "core/contact/contact_setup.h"
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
 #include "core/model/fabric_mesh.h"
@@ -56,6 +57,8 @@ int RunValidate(const ValidateArgs& args) {
     Scene scene = ReadScene(args.scene);
     Mesh mesh = MeshFabric(SceneOnSolvedMesh(scene).fabric);
     auto selections = ResolveSelections(scene, mesh);
+    CheckFrictionSlip(
+        scene, (mesh.positions.colwise().maxCoeff() - mesh.positions.colwise().minCoeff()).norm());
     // Mesh obstacles are read and checked (closed, readable) here too.
     for (size_t i = 0; i < scene.obstacles.size(); ++i)
       MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]");

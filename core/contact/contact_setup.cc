@@ -37,14 +37,9 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
   const double penalty =
       scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
   const double friction = scene.contact ? scene.contact->friction : 0.0;
+  CheckFrictionSlip(scene, model.characteristic_length);
   const double slip =
       scene.contact && scene.contact->friction_slip ? *scene.contact->friction_slip : 0.0;
-  if (slip >= model.characteristic_length)
-    throw SceneError("contact.friction_slip",
-                     Format("the slip at which friction slides (%.4g mm) must be smaller than the "
-                            "part (its diagonal is %.4g mm)",
-                            1e3 * slip,
-                            1e3 * model.characteristic_length));
   auto contact =
       std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0, friction, slip);
   // A fabric that starts inside an obstacle has no meaningful first step.
@@ -55,6 +50,17 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
     throw SceneError("obstacles", message + "; raise the fabric or move the obstacle");
   }
   return contact;
+}
+
+void CheckFrictionSlip(const Scene& scene, double part_diagonal) {
+  if (!scene.contact || !scene.contact->friction_slip) return;
+  const double slip = *scene.contact->friction_slip;
+  if (slip >= part_diagonal)
+    throw SceneError("contact.friction_slip",
+                     Format("the slip at which friction slides (%.4g mm) must be smaller than the "
+                            "part (its diagonal is %.4g mm)",
+                            1e3 * slip,
+                            1e3 * part_diagonal));
 }
 
 double LayerExclusion(const ShellModel& model, double element_size) {

@@ -20,6 +20,10 @@ namespace drape {
 // unreadable or open mesh obstacle ("obstacles[i].mesh.file").
 std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellModel& model);
 
+// contact.friction_slip against the part's size (its diagonal [m]): a
+// SceneError naming the key when it is not smaller.
+void CheckFrictionSlip(const Scene& scene, double part_diagonal);
+
 // Whether the held nodes alone stop every rigid motion: three of them not on
 // one line (a clamp fixes position and director, so one clamped node with a
 // second held node also does).

@@ -134,8 +134,11 @@ StageOutcome RunArcLength(SolveRun& run,
         return o;
       continue;
     }
-    Augmentation passes;
-    if (!PassContact(run, step.landed ? 1.0 : step.lambda, loading, step, passes)) {
+    // With friction the contact passes come before the step is judged: a
+    // step whose lag does not settle is cut. (Without, they follow it.)
+    std::optional<Augmentation> passes;
+    if (run.contact && run.contact->friction() > 0 &&
+        !PassContact(run, step.landed ? 1.0 : step.lambda, loading, step, passes.emplace())) {
       run.state = saved;
       if (StageOutcome o = AfterFailedStep(run, index, loading, step, at, cuts_in_a_row, stage);
           !o.GoesOn())
@@ -180,7 +183,7 @@ StageOutcome RunArcLength(SolveRun& run,
                                              loading,
                                              step,
                                              event ? &*event : nullptr,
-                                             &passes);
+                                             passes ? &*passes : nullptr);
         !o.GoesOn())
       return o;
     if (run.slides_as_a_whole) {

@@ -157,6 +157,13 @@ const std::vector<MalformedCase>& Cases() {
       {"negative friction",
        [](json& j) { j["contact"]["friction"] = -0.1; },
        "contact.friction: a friction coefficient must not be negative"},
+      {"non-positive friction slip",
+       [](json& j) { j["contact"]["friction_slip"] = "0 mm"; },
+       "contact.friction_slip: must be greater than zero"},
+      {"friction slip as large as the part",
+       [](json& j) { j["contact"]["friction_slip"] = "1 m"; },
+       "contact.friction_slip: the slip at which friction slides (1000 mm) must be smaller than "
+       "the part"},
       {"no stages",
        [](json& j) { j["stages"] = json::array(); },
        "stages: a scene needs at least one stage"},
