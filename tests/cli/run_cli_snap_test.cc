@@ -169,6 +169,15 @@ TEST(RunCliSnap, ASheetOnATableLessSteepThanItsFrictionStaysWhereItLies) {
   const double x = std::stod(rows.back()[test::Column(rows[0], "centre_x_m")]);
   const double epsilon = 1e-5;
   EXPECT_NEAR(x, epsilon * (1 - std::sqrt(0.02)), 1e-2 * epsilon);
+  // Every node sticks, and friction carries the weight's component along
+  // the table, W sin θ (W = w A), to the equilibrium tolerance.
+  const json& friction = result["steps"].back()["contact"]["friction"];
+  EXPECT_EQ(friction["sliding"], 0);
+  EXPECT_EQ(friction["sticking"], 121);  // the 11 × 11 nodes
+  const double weight = kWeight * 0.1 * 0.1;
+  const double sine = std::sin(std::atan(0.98 * 0.3));
+  EXPECT_NEAR(friction["force"][0].get<double>(), -weight * sine, 1e-6 * weight);
+  EXPECT_NEAR(friction["force"][1].get<double>(), 0.0, 1e-6 * weight);
 }
 
 }  // namespace
