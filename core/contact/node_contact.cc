@@ -239,6 +239,13 @@ void NodeContact::Relag(const ShellState& state) {
   if (friction_ > 0.0) lag_ = LagsAt(state);
 }
 
+void NodeContact::RestartFriction(const ShellState& state) {
+  if (friction_ <= 0.0) return;
+  for (size_t at = 0; at < lag_.size(); ++at) lag_[at] = LagAt(state, at, FrictionLag{}, true);
+  committed_ = lag_;
+  anchors_ = state.positions;
+}
+
 bool NodeContact::LagAtPrediction(const ShellState& predicted) {
   if (friction_ <= 0.0) return false;
   std::vector<FrictionLag> now = LagsAt(predicted);

@@ -92,6 +92,9 @@ class NodeContact {
   // Relag would make, over the largest (0 without friction or contact).
   double FrictionLagChange(const ShellState& state) const;
   void Relag(const ShellState& state);
+  // Friction starts from rest at `state` (after a jump): each node in
+  // contact anchored where it is, with its normal force there.
+  void RestartFriction(const ShellState& state);
   // Relag at a step's predicted state; true when nodes that had no friction
   // in the lag carry a tenth of the normal force there (the predictor, made
   // without their friction, slid them freely: it should be made again).

@@ -131,6 +131,9 @@ StageOutcome RecordSnap(SolveRun& run,
   event.mode_max_displacement = LargestTranslation(start.before.state, jump.state);
   event.switch_iterations = newton.iterations;
   event.switch_s = jump.seconds;
+  // The jump slid the part along its obstacles; where it lands, friction
+  // starts again from rest (its anchors there), as a new step's would.
+  if (run.contact) run.contact->RestartFriction(jump.state);
   landed.state = jump.state;
   landed.lambda = start.lambda;
   landed.step = {};

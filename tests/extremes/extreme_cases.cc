@@ -291,17 +291,20 @@ std::vector<ExtremeCase> AllCases() {
                              Ends::kFailed,
                              {"frictionless", "contact.friction"})));
   // With friction it holds, but must wrinkle over the neck. Under the
-  // lagged friction (issue 35) it snaps 12 times and stops at λ = 0.0108
-  // (Newton on the triangle-mesh form: ‖R‖/‖R₀‖ = 3.7e4), 25 s; before, the
-  // regularised friction diverged at λ = 0.00097. Not yet a drape.
+  // lagged friction (issue 35), with friction restarting where a snap lands,
+  // it climbs to λ = 0.417 in 354 steps, 15 snaps and 8 branch switches, and
+  // stops there (the corrector runs back along the path), 190 s; before, the
+  // regularised friction diverged at λ = 0.00097. Not yet a drape: here it
+  // is held to 60 steps, and must say so naming the key.
   cases.push_back(Slow(Stops("sheet_resting_on_dress_form_with_friction",
                              [=](const fs::path&) {
                                Scene scene = on_dress_form(0.5, 0.5, 25, 25);
                                scene.contact->friction = 0.3;
+                               scene.solver.max_steps = 60;
                                return scene;
                              },
                              Ends::kFailed,
-                             {"snaps", "solver.branching"})));
+                             {"solver.max_steps"})));
   // The scarf (resources/scenes/dress-form-drape.json) with a penalty ten
   // times the automatic one.
   cases.push_back(Stops("scarf_with_stiff_penalty",
