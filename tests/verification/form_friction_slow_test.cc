@@ -1,0 +1,62 @@
+// The scarf of resources/scenes/dress-form-drape.json without its pin, held
+// on the form by friction (μ = 0.3) alone (issue 35). Frictionless, a scarf
+// hung over the neck is a chain over a pulley; with the regularised friction
+// it replaced, the path diverged at λ ≈ 0.0015. ~25 s: the slow tier.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/io/scene_reader.h"
+#include "core/solve/shell_solver.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+TEST(FormFriction, AnUnpinnedScarfRestsOnTheFormOnAStablePath) {
+  Scene scene = ReadScene(test::ScenesDir() / "dress-form-drape.json");
+  scene.supports.clear();
+  scene.contact->friction = 0.3;
+  scene.solver.branching = Branching::kStable;
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  StepState last;
+  int unstable_steps = 0;
+  const SolveSummary summary = solver.Solve({[&](const StepState& step) {
+    if (step.negative_pivots > 0) ++unstable_steps;
+    last = step;
+    return StepDecision::kContinue;
+  }});
+  ASSERT_TRUE(summary.IsComplete()) << summary.FullReport();
+  // Every state on the way is one a real scarf could rest in.
+  EXPECT_EQ(unstable_steps, 0) << summary.FullReport();
+  // Nothing but the form holds it: its normal and friction forces carry the
+  // weight, to the Newton tolerance (1e-6 of the force level).
+  const double weight = solver.model().total_weight.norm();
+  ASSERT_TRUE(last.contact.has_value());
+  EXPECT_NEAR(last.contact->force.z(), weight, 1e-5 * weight);
+  EXPECT_NEAR(last.contact->force.head<2>().norm(), 0.0, 1e-5 * weight);
+  // Friction holds part of it: the scarf's ends pull it down the shoulders.
+  EXPECT_GT(last.contact->friction_force.z(), 0.05 * weight);
+  EXPECT_GT(last.contact->sticking, 0);
+  // The form is mirror-symmetric about x = 0: both ends hang alike, past
+  // the shoulders (z ≈ 0.5 m) and outside the body (half-width ≤ 0.16 m).
+  const Eigen::Vector3d left = last.probes[0].value, right = last.probes[1].value;
+  EXPECT_NEAR(left.x(), -right.x(), 1e-6);
+  EXPECT_NEAR(left.z(), right.z(), 1e-6);
+  EXPECT_LT(left.z(), 0.45);
+  EXPECT_GT(std::abs(left.x()), 0.11);
+  EXPECT_LT(std::abs(left.x()), 0.2);
+  std::printf(
+      "unpinned scarf, mu = 0.3: %d steps, ends at (%.4f, %.4f) m; friction "
+      "carries %.3f of the weight; %d nodes stick, %d slide\n",
+      summary.steps,
+      right.x(),
+      right.z(),
+      last.contact->friction_force.z() / weight,
+      last.contact->sticking,
+      last.contact->sliding);
+}
+
+}  // namespace
+}  // namespace drape
