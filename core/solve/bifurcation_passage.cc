@@ -58,10 +58,12 @@ StageOutcome RecordPathPoint(SolveRun& run,
                              const StageLoading& loading,
                              const PathPoint& point,
                              StageSummary& stage,
-                             const StabilityEvent* event) {
+                             const StabilityEvent* event,
+                             const Augmentation* passes) {
   ++stage.steps;
   stage.final_lambda = point.lambda;
-  return RecordConvergedStep(run, {index, stage.steps, point.lambda}, loading, point.step, event);
+  return RecordConvergedStep(
+      run, {index, stage.steps, point.lambda}, loading, point.step, event, passes);
 }
 
 StabilityEvent ClassifyPivotChange(int direction_before, int direction, double lambda) {

@@ -9,6 +9,7 @@
 #include "core/continuation/branch_switch.h"
 #include "core/continuation/stability_event.h"
 #include "core/fe/stage_loading.h"
+#include "core/solve/contact_augmentation.h"
 #include "core/solve/solve_run.h"
 
 namespace drape {
@@ -52,13 +53,15 @@ struct Crossing {
 // scene's imperfection.
 BifurcationSettings PassageSettings(const SolveRun& run);
 
-// Records a point a passage reached as the stage's next step.
+// Records a point a passage reached as the stage's next step; `passes` as
+// for RecordConvergedStep.
 StageOutcome RecordPathPoint(SolveRun& run,
                              int index,
                              const StageLoading& loading,
                              const PathPoint& point,
                              StageSummary& stage,
-                             const StabilityEvent* event = nullptr);
+                             const StabilityEvent* event = nullptr,
+                             const Augmentation* passes = nullptr);
 
 // Locates the bifurcation, switches to a secondary branch and records the
 // points reached (the bifurcation, the first point on the branch) into

@@ -107,8 +107,15 @@ StageOutcome RecordSnap(SolveRun& run,
   run.state = start.before.state;
   if (newton.status == NewtonOutcome::Status::kCancelled)
     return StageOutcome::Cancelled("in stage '" + name + "' while it snapped");
+  // The last stable point before the jump is recorded as the bracket found
+  // it: re-lagging friction there would move a point this close to the
+  // critical one across it.
+  const Augmentation none;
+  const bool with_friction = run.contact && run.contact->friction() > 0;
   if (record_before)
-    if (StageOutcome o = RecordPathPoint(run, index, loading, start.before, stage); !o.GoesOn())
+    if (StageOutcome o = RecordPathPoint(
+            run, index, loading, start.before, stage, nullptr, with_friction ? &none : nullptr);
+        !o.GoesOn())
       return o;
   if (newton.status != NewtonOutcome::Status::kConverged)
     return StageOutcome::Stop(
