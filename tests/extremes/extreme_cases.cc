@@ -317,7 +317,9 @@ std::vector<ExtremeCase> AllCases() {
                         Ends::kFailed,
                         {"contact.penalty", "\"auto\""}));
   // A very soft strip (E = 1 MPa, h = 0.1 mm, 0.5 N/m²) dropped over a rod.
-  cases.push_back(Stops(
+  // 6.5 s here since issue 35's friction work (1.5 s before; not yet
+  // understood), past its 60 s limit under the sanitizers: the slow tier.
+  cases.push_back(Slow(Stops(
       "soft_strip_over_rod",
       [](const fs::path&) {
         Scene scene;
@@ -336,7 +338,7 @@ std::vector<ExtremeCase> AllCases() {
         return scene;
       },
       Ends::kFailed,
-      {"frictionless", "contact.friction"}));
+      {"frictionless", "contact.friction"})));
 
   // Kawabata files: 20 % noise on a linear law (the averaged branches still
   // give the elastica), and a file whose moments never change.
