@@ -35,27 +35,51 @@ std::string Number(double value) {
 
 }  // namespace
 
-StateFileWriter::StateFileWriter(const std::filesystem::path& file, const Mesh& mesh)
-    : path_(file), nodes_(mesh.NodeCount()) {
-  file_ = std::fopen(file.c_str(), "wb");
-  if (!file_) throw std::runtime_error("cannot create '" + file.string() + "'");
+namespace {
+
+// The header and the mesh: the part of a state file that precedes the steps.
+void WriteHeaderAndMesh(std::FILE* f, const Mesh& mesh, const std::filesystem::path& path) {
   const std::uint32_t header[4] = {kVersion,
                                    static_cast<std::uint32_t>(mesh.NodeCount()),
                                    static_cast<std::uint32_t>(mesh.ElementCount()),
                                    0};
-  WriteOrThrow(file_, kMagic, sizeof kMagic, path_);
-  WriteOrThrow(file_, header, sizeof header, path_);
+  WriteOrThrow(f, kMagic, sizeof kMagic, path);
+  WriteOrThrow(f, header, sizeof header, path);
   // Eigen stores column-major: write row by row so the file is node-major.
   const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = mesh.positions;
-  WriteOrThrow(file_, x.data(), sizeof(double) * x.size(), path_);
+  WriteOrThrow(f, x.data(), sizeof(double) * x.size(), path);
   Eigen::Matrix<std::int32_t, Eigen::Dynamic, 4, Eigen::RowMajor> q =
       mesh.quads.cast<std::int32_t>();
-  WriteOrThrow(file_, q.data(), sizeof(std::int32_t) * q.size(), path_);
+  WriteOrThrow(f, q.data(), sizeof(std::int32_t) * q.size(), path);
   if (mesh.ElementCount() % 2) {
     const std::int32_t pad = 0;
-    WriteOrThrow(file_, &pad, sizeof pad, path_);
+    WriteOrThrow(f, &pad, sizeof pad, path);
   }
-  std::fflush(file_);
+  if (std::fflush(f) != 0)
+    throw std::runtime_error("cannot write '" + path.string() + "' (disk full?)");
+}
+
+}  // namespace
+
+StateFileWriter::StateFileWriter(const std::filesystem::path& file, const Mesh& mesh)
+    : path_(file), nodes_(mesh.NodeCount()) {
+  // The header and mesh go to a side file that takes the name only when it
+  // is whole: a run killed while it writes them leaves no file that a reader
+  // would take for a damaged state file.
+  std::filesystem::path part = file;
+  part += ".part";
+  file_ = std::fopen(part.c_str(), "wb");
+  if (!file_) throw std::runtime_error("cannot create '" + part.string() + "'");
+  std::error_code ec;
+  try {
+    WriteHeaderAndMesh(file_, mesh, part);
+    std::filesystem::rename(part, file, ec);
+    if (ec) throw std::runtime_error("cannot create '" + file.string() + "': " + ec.message());
+  } catch (...) {
+    std::fclose(file_);
+    std::filesystem::remove(part, ec);
+    throw;
+  }
 }
 
 StateFileWriter::~StateFileWriter() {

@@ -168,5 +168,22 @@ TEST(ReaderFuzzRegression, StateFileRefusesWhatItCannotHold) {
   EXPECT_EQ(ReadStateFile(cut.path()).steps.size(), 2u);
 }
 
+// A run killed while the header and mesh are written leaves no state file
+// (they go to states.bin.part first); once the writer exists, the file reads
+// with its mesh and no step, and no side file is left.
+TEST(StateFileWriter, TheFileTakesItsNameOnlyWhenHeaderAndMeshAreWhole) {
+  const Mesh mesh = MeshRectangle(0.2, 0.1, {0, 0}, 3, 2, 0.0);
+  const TempFile file(".bin", "");
+  std::filesystem::remove(file.path());
+  StateFileWriter writer(file.path(), mesh);
+  std::filesystem::path part = file.path();
+  part += ".part";
+  EXPECT_FALSE(std::filesystem::exists(part));
+  const StateFile states = ReadStateFile(file.path());
+  EXPECT_EQ(states.mesh.NodeCount(), 12);
+  EXPECT_EQ(states.mesh.ElementCount(), 6);
+  EXPECT_TRUE(states.steps.empty());
+}
+
 }  // namespace
 }  // namespace drape
