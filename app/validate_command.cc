@@ -57,8 +57,10 @@ int RunValidate(const ValidateArgs& args) {
     Scene scene = ReadScene(args.scene);
     Mesh mesh = MeshFabric(SceneOnSolvedMesh(scene).fabric);
     auto selections = ResolveSelections(scene, mesh);
-    CheckFrictionSlip(
-        scene, (mesh.positions.colwise().maxCoeff() - mesh.positions.colwise().minCoeff()).norm());
+    const double diagonal =
+        (mesh.positions.colwise().maxCoeff() - mesh.positions.colwise().minCoeff()).norm();
+    CheckFrictionSlip(scene, diagonal);
+    CheckBarrierDistance(scene, diagonal);
     // Mesh obstacles are read and checked (closed, readable) here too.
     for (size_t i = 0; i < scene.obstacles.size(); ++i)
       MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]");

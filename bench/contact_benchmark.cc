@@ -55,7 +55,8 @@ void BM_AssembleOnTable(benchmark::State& bench) {
     obstacles.push_back(
         {"table",
          MakeObstacleGeometry(Obstacle{"table", PlaneShape{{0, 0, -below}, {0, 0, 1}}}, ".")});
-    contact = std::make_unique<NodeContact>(model, std::move(obstacles), AutoPenalty(model), 0.0);
+    contact = std::make_unique<NodeContact>(
+        model, std::move(obstacles), NormalLaw{AutoPenalty(model)}, 0.0);
   }
   DofMap dofs(model.NodeCount());
   for (const auto& held : model.supports)

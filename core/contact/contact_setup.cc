@@ -1,6 +1,7 @@
 #include "core/contact/contact_setup.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -34,14 +35,13 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
     obstacles.push_back(
         {scene.obstacles[i].name,
          MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]")});
-  const double penalty =
-      scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
   const double friction = scene.contact ? scene.contact->friction : 0.0;
   CheckFrictionSlip(scene, model.characteristic_length);
+  CheckBarrierDistance(scene, model.characteristic_length);
   const double slip =
       scene.contact && scene.contact->friction_slip ? *scene.contact->friction_slip : 0.0;
-  auto contact =
-      std::make_unique<NodeContact>(model, std::move(obstacles), penalty, 0.0, friction, slip);
+  auto contact = std::make_unique<NodeContact>(
+      model, std::move(obstacles), NormalLawFor(scene, model), 0.0, friction, slip);
   // A fabric that starts inside an obstacle has no meaningful first step.
   const auto inside = contact->Penetrations(model.reference, 1e-3 * model.thickness);
   if (!inside.empty()) {
@@ -49,7 +49,50 @@ std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellMode
     if (inside.size() > 1) message += " (and " + std::to_string(inside.size() - 1) + " more nodes)";
     throw SceneError("obstacles", message + "; raise the fabric or move the obstacle");
   }
+  // The barrier is infinite where the fabric's surface touches.
+  if (contact->HasBarrier()) {
+    const ClosestNode closest = contact->Closest(model.reference);
+    if (closest.gap <= 1e-9 * model.thickness) {
+      const auto x = model.reference.positions.row(closest.node);
+      throw SceneError(
+          "obstacles",
+          Format("the fabric starts touching obstacle '%s': node %d at (%.4g, %.4g, %.4g) m is "
+                 "%.4g mm from it, and the barrier contact (contact.law \"barrier\") needs a "
+                 "gap; raise the fabric by a fraction of the barrier distance (%.4g mm), or use "
+                 "contact.law \"penalty\"",
+                 scene.obstacles[closest.obstacle].name.c_str(),
+                 closest.node,
+                 x(0),
+                 x(1),
+                 x(2),
+                 1e3 * (closest.gap + 0.5 * model.thickness),
+                 1e3 * contact->law().barrier_distance));
+    }
+  }
   return contact;
+}
+
+NormalLaw NormalLawFor(const Scene& scene, const ShellModel& model) {
+  NormalLaw law;
+  if (!scene.contact || scene.contact->law == ContactLaw::kPenalty) {
+    law.penalty =
+        scene.contact && scene.contact->penalty ? *scene.contact->penalty : AutoPenalty(model);
+    return law;
+  }
+  law.barrier_distance =
+      scene.contact->barrier_distance ? *scene.contact->barrier_distance : 0.5 * model.thickness;
+  // Halfway into its band the barrier carries ten times the fabric's weight
+  // per area w (−b'(d̂/2) = (½ + ln 2) d̂), as the self-contact's does a node's:
+  // resting under its weight a node sits near the band's outer edge, and
+  // pressed harder, closer in. Without weight, a millionth of the penalty.
+  double area = 0;
+  for (const auto& element : model.elements)
+    for (const auto& gp : element.gauss) area += gp.area;
+  const double weight_per_area = model.total_weight.norm() / std::max(area, 1e-300);
+  law.barrier_stiffness =
+      std::max(10 * weight_per_area / ((0.5 + std::log(2.0)) * law.barrier_distance),
+               1e-6 * AutoPenalty(model));
+  return law;
 }
 
 void CheckFrictionSlip(const Scene& scene, double part_diagonal) {
@@ -60,6 +103,17 @@ void CheckFrictionSlip(const Scene& scene, double part_diagonal) {
                      Format("the slip at which friction slides (%.4g mm) must be smaller than the "
                             "part (its diagonal is %.4g mm)",
                             1e3 * slip,
+                            1e3 * part_diagonal));
+}
+
+void CheckBarrierDistance(const Scene& scene, double part_diagonal) {
+  if (!scene.contact || !scene.contact->barrier_distance) return;
+  const double distance = *scene.contact->barrier_distance;
+  if (distance >= part_diagonal)
+    throw SceneError("contact.barrier_distance",
+                     Format("the distance at which the barrier acts (%.4g mm) must be smaller than "
+                            "the part (its diagonal is %.4g mm)",
+                            1e3 * distance,
                             1e3 * part_diagonal));
 }
 

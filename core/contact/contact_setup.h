@@ -20,6 +20,14 @@ namespace drape {
 // unreadable or open mesh obstacle ("obstacles[i].mesh.file").
 std::unique_ptr<NodeContact> MakeNodeContact(const Scene& scene, const ShellModel& model);
 
+// The normal law of a scene's contact: its penalty ("auto": AutoPenalty),
+// or its barrier (contact.law "barrier"), whose distance defaults to half
+// the thickness.
+NormalLaw NormalLawFor(const Scene& scene, const ShellModel& model);
+
+// contact.barrier_distance against the part's size (its diagonal [m]).
+void CheckBarrierDistance(const Scene& scene, double part_diagonal);
+
 // contact.friction_slip against the part's size (its diagonal [m]): a
 // SceneError naming the key when it is not smaller.
 void CheckFrictionSlip(const Scene& scene, double part_diagonal);

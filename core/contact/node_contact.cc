@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/contact/contact_barrier.h"
+
 namespace drape {
 namespace {
 
@@ -13,6 +15,9 @@ constexpr double kSliding = 0.999;
 // A predicted state where nodes that had no friction carry this share of the
 // normal force asks for the predictor again, with their friction.
 constexpr double kFreshShare = 0.1;
+// A step may close at most this share of a node's gap to an obstacle
+// (barrier law), as the self-contact's collision filter does.
+constexpr double kClose = 0.9;
 
 double MeanElementSize(const ShellModel& model) {
   double area = 0;
@@ -25,13 +30,13 @@ double MeanElementSize(const ShellModel& model) {
 
 NodeContact::NodeContact(const ShellModel& model,
                          std::vector<NamedObstacle> obstacles,
-                         double penalty,
+                         const NormalLaw& law,
                          double stabilization,
                          double friction,
                          double friction_slip)
     : obstacles_(std::move(obstacles)),
       area_(model.NodeCount(), 0.0),
-      penalty_(penalty),
+      law_(law),
       stabilization_(stabilization),
       half_thickness_(0.5 * model.thickness),
       friction_(friction),
@@ -53,15 +58,19 @@ void NodeContact::ForEachContact(const ShellState& state, F&& f) const {
     for (size_t o = 0; o < obstacles_.size(); ++o) {
       const DistanceQuery q = Query(state, static_cast<int>(o), x);
       const double g = q.distance - half_thickness_;
-      // Touching counts (with no force): its stiffness lets a predictor see
-      // the obstacle the fabric rests on. "Touching" allows for round-off in
-      // the distance of a node placed exactly on a curved surface. A node
-      // with a multiplier is in contact while it still pushes.
-      const double m = multiplier_[static_cast<size_t>(i) * obstacles_.size() + o];
-      if (g <= kTouching * half_thickness_ || m - penalty_ * area_[i] * g > 0.0)
-        f(i, static_cast<int>(o), g, q, x);
+      if (InContact(i, static_cast<int>(o), g)) f(i, static_cast<int>(o), g, q, x);
     }
   }
+}
+
+bool NodeContact::InContact(int i, int o, double g) const {
+  if (HasBarrier()) return g < law_.barrier_distance;
+  // Touching counts (with no force): its stiffness lets a predictor see the
+  // obstacle the fabric rests on. "Touching" allows for round-off in the
+  // distance of a node placed exactly on a curved surface. A node with a
+  // multiplier is in contact while it still pushes.
+  const double m = multiplier_[static_cast<size_t>(i) * obstacles_.size() + o];
+  return g <= kTouching * half_thickness_ || m - law_.penalty * area_[i] * g > 0.0;
 }
 
 ObstaclePlacement NodeContact::PlacementOf(const ShellState& state, int o) {
@@ -107,8 +116,7 @@ FrictionLag NodeContact::LagAt(const ShellState& state,
   const DistanceQuery q = Query(state, o, x);
   const double g = q.distance - half_thickness_;
   FrictionLag lag;
-  if (g > kTouching * half_thickness_ && multiplier_[at] - penalty_ * area_[i] * g <= 0.0)
-    return lag;
+  if (!InContact(i, o, g)) return lag;
   lag.normal_force = Respond(i, o, g, q).normal_force;
   if (lag.normal_force <= 0.0) return lag;
   const Eigen::Matrix<double, 3, 2> basis = TangentBasis(q.normal);
@@ -150,10 +158,9 @@ void NodeContact::AddObstacleRate(const ShellState& state,
               m.motion.angular_rate.cross(x - m.motion.center - m.motion.translation) +
               m.motion.translation_rate;
           const Eigen::Vector3d n_rate = m.motion.angular_rate.cross(q.normal) - q.hessian * v;
-          const double k = penalty_ * area_[i];
-          const double f_n =
-              std::max(0.0, multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] - k * g);
-          rate.segment<3>(kDofsPerNode * i) -= k * q.normal.dot(v) * q.normal + f_n * n_rate;
+          const NodeResponse r = Respond(i, o, g, q);
+          rate.segment<3>(kDofsPerNode * i) -=
+              r.normal_stiffness * q.normal.dot(v) * q.normal + r.normal_force * n_rate;
         });
 }
 
@@ -161,14 +168,25 @@ NodeContact::NodeResponse NodeContact::Respond(int i,
                                                int o,
                                                double g,
                                                const DistanceQuery& q) const {
-  const double k = penalty_ * area_[i];
-  // f_n = m − k A g (m: the augmented-Lagrangian multiplier), and
-  // −∂(f_n n)/∂x = k A n nᵀ − f_n ∇∇d.
   NodeResponse r;
-  r.normal_force =
-      std::max(0.0, multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] - k * g);
+  if (HasBarrier()) {
+    // f_n = −κ A b'(g), k = κ A b''(g): both grow without bound as g → 0.
+    const double kappa = law_.barrier_stiffness * area_[i];
+    const BarrierValue b = ClampedLogBarrier(g, law_.barrier_distance);
+    r.normal_force = -kappa * b.first;
+    r.normal_stiffness = kappa * b.second;
+    r.energy = kappa * b.value;
+  } else {
+    // f_n = m − k A g (m: the augmented-Lagrangian multiplier).
+    const double k = law_.penalty * area_[i];
+    r.normal_force =
+        std::max(0.0, multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] - k * g);
+    r.normal_stiffness = k;
+    r.energy = k > 0 ? 0.5 * r.normal_force * r.normal_force / k : 0.0;
+  }
+  // −∂(f_n n)/∂x = k n nᵀ − f_n ∇∇d.
   r.force = r.normal_force * q.normal;
-  r.stiffness = k * q.normal * q.normal.transpose() - r.normal_force * q.hessian;
+  r.stiffness = r.normal_stiffness * q.normal * q.normal.transpose() - r.normal_force * q.hessian;
   return r;
 }
 
@@ -205,8 +223,7 @@ double NodeContact::Energy(const ShellState& state) const {
   double energy = 0;
   ForEachContact(state,
                  [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
-                   const double f_n = Respond(i, o, g, q).normal_force;
-                   energy += 0.5 * f_n * f_n / (penalty_ * area_[i]);
+                   energy += Respond(i, o, g, q).energy;
                  });
   ForEachFriction(state, [&](int, int, const FrictionResponse& f) { energy += f.energy; });
   if (stabilization_ <= 0.0) return energy;
@@ -217,6 +234,7 @@ double NodeContact::Energy(const ShellState& state) const {
 }
 
 void NodeContact::Augment(const ShellState& state) {
+  if (HasBarrier()) return;  // no multipliers: no node is inside
   ForEachContact(state,
                  [&](int i, int o, double g, const DistanceQuery& q, const Eigen::Vector3d&) {
                    multiplier_[static_cast<size_t>(i) * obstacles_.size() + o] =
@@ -356,6 +374,46 @@ std::vector<std::string> NodeContact::Penetrations(const ShellState& state,
   std::vector<std::string> lines;
   for (auto& f : found) lines.push_back(std::move(f.second));
   return lines;
+}
+
+ClosestNode NodeContact::Closest(const ShellState& state) const {
+  ClosestNode closest;
+  for (int i = 0; i < state.NodeCount(); ++i)
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+      const double g =
+          Query(state, static_cast<int>(o), state.positions.row(i).transpose()).distance -
+          half_thickness_;
+      if (g < closest.gap) closest = {g, i, static_cast<int>(o)};
+    }
+  return closest;
+}
+
+double NodeContact::StepBound(const ShellState& state, const Eigen::MatrixX3d& dx) const {
+  if (!HasBarrier()) return 1.0;
+  double bound = 1.0;
+  for (int i = 0; i < state.NodeCount(); ++i) {
+    const Eigen::Vector3d step = dx.row(i).transpose();
+    const double length = step.norm();
+    if (length == 0.0) continue;
+    const Eigen::Vector3d x = state.positions.row(i).transpose();
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+      const DistanceQuery q = Query(state, static_cast<int>(o), x);
+      const double g = q.distance - half_thickness_;
+      // Already inside (never after a bounded step) or out of reach.
+      if (g <= 0.0 || length * bound <= kClose * g) continue;
+      // d(x + t dx) ≥ d(x) + t ∇d·dx outside a convex obstacle.
+      const double closing = -q.normal.dot(step);
+      double t = closing > 0.0 ? std::min(bound, kClose * g / closing) : bound;
+      if (!obstacles_[o].geometry->IsConvex()) {
+        auto gap_at = [&](double s) {
+          return Query(state, static_cast<int>(o), x + s * step).distance - half_thickness_;
+        };
+        for (int halving = 0; halving < 60 && gap_at(t) < (1 - kClose) * g; ++halving) t *= 0.5;
+      }
+      bound = std::min(bound, t);
+    }
+  }
+  return bound;
 }
 
 double DefaultFrictionSlip(const ShellModel& model) {

@@ -1,12 +1,19 @@
-// Penalty contact of the fabric's nodes with rigid obstacles (DESIGN.md §8).
+// Contact of the fabric's nodes with rigid obstacles (DESIGN.md §8).
 //
 // A node at signed distance d from an obstacle has the gap g = d − h/2 (the
-// fabric's surface is half a thickness from its midsurface). For g < 0 the
-// energy is ½ k A g², with k the penalty per area and A the node's share of
-// the reference area, so the penalty is mesh independent: the force is
-// −k A g n and the tangent k A (n nᵀ + g ∇∇d). With an augmented-Lagrangian
-// multiplier m the normal force is f_n = m − k A g (≥ 0), and the tangent
-// k A n nᵀ − f_n ∇∇d.
+// fabric's surface is half a thickness from its midsurface). Its normal
+// force f_n(g) ≥ 0 acts along n = ∇d, with the tangent k n nᵀ − f_n ∇∇d
+// (k = −df_n/dg), by one of two laws:
+//
+// - Penalty: for g < 0 the energy is ½ k A g², with k the penalty per area
+//   and A the node's share of the reference area, so the penalty is mesh
+//   independent. With an augmented-Lagrangian multiplier m the normal force
+//   is f_n = m − k A g. A node may sit a little inside (the passes shrink
+//   it), and the energy is only C¹ where contact starts.
+// - Barrier: the clamped log barrier κ A b(g) of contact_barrier.h over the
+//   band 0 < g < d̂: C² where it starts, infinite at g = 0, so no node's
+//   surface ever reaches an obstacle. Every update is cut short where a node
+//   would close 90 % of its gap (StepBound).
 //
 // Coulomb friction (μ > 0): the lagged potential of lagged_friction.h. Each
 // node in contact keeps its normal force, tangent plane and anchor from the
@@ -28,6 +35,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,17 +62,42 @@ struct NamedObstacle {
   std::unique_ptr<ObstacleGeometry> geometry;
 };
 
+// How an obstacle pushes: a penalty (barrier_distance 0) or the barrier.
+struct NormalLaw {
+  double penalty = 0;            // k per area [N/m³]
+  double barrier_distance = 0;   // d̂ [m]; 0: the penalty law
+  double barrier_stiffness = 0;  // κ per area [N/m³]
+};
+
+// The node nearest to an obstacle: its gap g = d − h/2 [m] (+∞ without
+// obstacles).
+struct ClosestNode {
+  double gap = INFINITY;
+  int node = -1;
+  int obstacle = -1;
+};
+
 class NodeContact {
  public:
-  // `penalty`: k per area [N/m³]; `stabilization`: spring per node [N/m], 0
-  // for none; `friction`: μ; `friction_slip`: ε [m], the slip at which a
-  // node turns from sticking to sliding (0: DefaultFrictionSlip).
+  // `stabilization`: spring per node [N/m], 0 for none; `friction`: μ;
+  // `friction_slip`: ε [m], the slip at which a node turns from sticking to
+  // sliding (0: DefaultFrictionSlip).
   NodeContact(const ShellModel& model,
               std::vector<NamedObstacle> obstacles,
-              double penalty,
+              const NormalLaw& law,
               double stabilization,
               double friction = 0.0,
               double friction_slip = 0.0);
+
+  // The largest t ∈ [0, 1] for which the nodes moved from `state` by t dx
+  // (one row per node) keep at least a tenth of their gap to every obstacle
+  // (1 under the penalty law). Exact for convex obstacles, whose distance
+  // is convex outside them; for a mesh the step's end is checked (and
+  // halved until it keeps the tenth): a node cannot then pass through a
+  // part of the form thinner than one update.
+  double StepBound(const ShellState& state, const Eigen::MatrixX3d& dx) const;
+  bool HasBarrier() const { return law_.barrier_distance > 0; }
+  ClosestNode Closest(const ShellState& state) const;
 
   // Adds ∂E/∂x of contact and stabilisation to `internal` (5 per node) and,
   // with `blocks`, each node's 3×3 translational tangent block (row-major).
@@ -141,7 +174,8 @@ class NodeContact {
                                         double depth,
                                         const std::vector<int>& among = {}) const;
 
-  double penalty() const { return penalty_; }
+  double penalty() const { return law_.penalty; }
+  const NormalLaw& law() const { return law_; }
   double stabilization() const { return stabilization_; }
   double half_thickness() const { return half_thickness_; }
   double friction() const { return friction_; }
@@ -153,13 +187,18 @@ class NodeContact {
   template <typename F>
   void ForEachContact(const ShellState& state, F&& f) const;
 
-  // The normal force obstacle `o` exerts on node `i`, its magnitude, and
-  // the tangent −∂force/∂x.
+  // The normal force obstacle `o` exerts on node `i`, its magnitude, the
+  // tangent −∂force/∂x, k = −∂f_n/∂g and the energy.
   struct NodeResponse {
     Eigen::Vector3d force;
     double normal_force = 0;
     Eigen::Matrix3d stiffness;
+    double normal_stiffness = 0;
+    double energy = 0;
   };
+  // Whether node i at gap g from obstacle o is in contact: inside the
+  // barrier's band; or touching, or pushed by its multiplier (penalty).
+  bool InContact(int i, int o, double g) const;
   static ObstaclePlacement PlacementOf(const ShellState& state, int o);
   // Obstacle o's distance at world x, with it where `state` has placed it.
   DistanceQuery Query(const ShellState& state, int o, const Eigen::Vector3d& x) const;
@@ -175,7 +214,7 @@ class NodeContact {
 
   std::vector<NamedObstacle> obstacles_;
   std::vector<double> area_;  // tributary reference area per node [m²]
-  double penalty_;
+  NormalLaw law_;
   double stabilization_;
   std::vector<bool> held_;  // nodes without a spring
   double half_thickness_;

@@ -83,7 +83,7 @@ double ArcLengthStepper::CollisionFreeFraction(const ShellState& state,
                                                const Eigen::VectorXd& full,
                                                double lambda,
                                                double delta) const {
-  if (!system_.HasSelfContact()) return 1.0;
+  if (!system_.BoundsSteps()) return 1.0;
   ShellState moved = state;
   ApplyIncrement(full, moved);
   loading_.Place(lambda + delta, moved);
@@ -311,7 +311,11 @@ ContinuationStep ArcLengthStepper::StepAlong(ShellState& state,
     return out;
   }
   const Eigen::VectorXd n = metric.cwiseProduct(mode) / mode_norm;
-  const Eigen::VectorXd predictor = (amplitude / mode_norm) * mode;
+  Eigen::VectorXd predictor = (amplitude / mode_norm) * mode;
+  // Never into the fabric's layers or an obstacle's barrier.
+  const double bound = system_.StepBound(state, dofs.Expand(predictor));
+  predictor *= bound;
+  amplitude *= bound;
   ApplyIncrement(dofs.Expand(predictor), state);
   Eigen::VectorXd q = predictor;        // accumulated free increments, all DOFs
   Eigen::VectorXd a = Translations(q);  // the same, translations only

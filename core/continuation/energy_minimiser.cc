@@ -124,7 +124,8 @@ bool LeaveSaddle(EquilibriumSystem& system, double length, ShellState& state) {
   const Eigen::VectorXd increment = system.dofs().Expand(modes[0].shape);
   const double largest = MaxTranslation(increment);
   if (!(largest > 0)) return false;
-  ApplyIncrement(increment * (length / largest), state);
+  const Eigen::VectorXd step = increment * (length / largest);
+  ApplyIncrement(step * system.StepBound(state, step), state);
   return true;
 }
 

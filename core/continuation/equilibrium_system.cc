@@ -195,7 +195,7 @@ bool EquilibriumSystem::AddSelfContact(const ShellState& state, bool with_tangen
 
 double EquilibriumSystem::StepBound(const ShellState& state,
                                     const Eigen::VectorXd& increment) const {
-  if (!self_contact_) return 1.0;
+  if (!self_contact_ && !(contact_ && contact_->HasBarrier())) return 1.0;
   Positions dx(model_.NodeCount(), 3);
   for (int i = 0; i < model_.NodeCount(); ++i)
     dx.row(i) = increment.segment<3>(kDofsPerNode * i).transpose();
@@ -203,7 +203,8 @@ double EquilibriumSystem::StepBound(const ShellState& state,
 }
 
 double EquilibriumSystem::StepBound(const ShellState& state, const Positions& dx) const {
-  if (!self_contact_) return 1.0;
+  const double obstacles = contact_ ? contact_->StepBound(state, dx) : 1.0;
+  if (!self_contact_) return obstacles;
   // No pair's distance changes by more than twice the motions' spread: a
   // step that closes at most 90 % of the smallest gap beyond the offset is
   // whole (as the filter would find), without testing pairs.
@@ -211,9 +212,9 @@ double EquilibriumSystem::StepBound(const ShellState& state, const Positions& dx
       self_contact_positions_ == state.positions) {
     const SelfContactSettings& s = self_contact_->settings();
     const double gap = std::min(self_contact_smallest_, s.offset + s.activation) - s.offset;
-    if (2 * MotionSpread(dx) < 0.9 * gap) return 1.0;
+    if (2 * MotionSpread(dx) < 0.9 * gap) return obstacles;
   }
-  return self_contact_->StepBound(state.positions, dx);
+  return std::min(obstacles, self_contact_->StepBound(state.positions, dx));
 }
 
 Eigen::VectorXd EquilibriumSystem::ObstacleForceRate(

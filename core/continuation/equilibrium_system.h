@@ -54,12 +54,16 @@ class EquilibriumSystem {
   void SetSelfContact(SelfContact* self_contact) { self_contact_ = self_contact; }
 
   // The largest fraction of a full increment (5 per node) that keeps the
-  // layers apart (1 without self-contact).
+  // layers apart and the fabric out of the obstacles (1 without
+  // self-contact or a barrier).
   double StepBound(const ShellState& state, const Eigen::VectorXd& increment) const;
   // The same for the nodes moving from `state` by `motion` (one row per
   // node, held nodes' prescribed motion included).
   double StepBound(const ShellState& state, const Positions& motion) const;
-  bool HasSelfContact() const { return self_contact_ != nullptr; }
+  // Whether StepBound may cut a step: self-contact or a barrier contact.
+  bool BoundsSteps() const {
+    return self_contact_ != nullptr || (contact_ && contact_->HasBarrier());
+  }
 
   // Assembles the internal force (and the tangent) at `state`; returns the
   // energy. With `velocity` (prescribed DOF rates, 5 per node) and the

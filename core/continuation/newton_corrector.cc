@@ -136,7 +136,8 @@ double ApplyNewtonCorrection(EquilibriumSystem& system,
                              ShellState& state) {
   Eigen::VectorXd correction = system.dofs().Expand(system.Solve(-residual));
   // Never through the fabric itself: the part of the step that keeps its
-  // layers apart (self-contact; the whole step otherwise).
+  // layers apart and the fabric out of the obstacles (self-contact, barrier
+  // contact; the whole step otherwise).
   if (const double t = system.StepBound(state, correction); t < 1) correction *= t;
   ApplyIncrement(correction, state);
   return MaxTranslation(correction);

@@ -75,9 +75,16 @@ Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
 }
 
 Contact SceneParser::ReadContact(const JsonCursor& c) {
-  c.ExpectObject({"penalty", "friction", "friction_slip", "self", "thickness"});
+  c.ExpectObject(
+      {"law", "penalty", "barrier_distance", "friction", "friction_slip", "self", "thickness"});
   Contact contact;
+  if (auto l = c.Find("law"))
+    contact.law = static_cast<ContactLaw>(l->Choice({"penalty", "barrier"}));
   if (auto p = c.Find("penalty")) {
+    if (contact.law == ContactLaw::kBarrier)
+      p->Fail(
+          "a penalty belongs to contact.law \"penalty\"; this contact is a barrier "
+          "(its distance is contact.barrier_distance)");
     if (p->value().is_string() && p->value().get<std::string>() == "auto")
       contact.penalty = std::nullopt;
     else
@@ -87,6 +94,11 @@ Contact SceneParser::ReadContact(const JsonCursor& c) {
     contact.friction = f->Number();
     if (!std::isfinite(contact.friction)) f->Fail("a friction coefficient must be a finite number");
     if (contact.friction < 0) f->Fail("a friction coefficient must not be negative");
+  }
+  if (auto d = c.Find("barrier_distance")) {
+    if (contact.law != ContactLaw::kBarrier)
+      d->Fail("a barrier distance belongs to contact.law \"barrier\" (this contact is a penalty)");
+    contact.barrier_distance = d->PositiveQuantity(dim::kLength);
   }
   if (auto e = c.Find("friction_slip")) contact.friction_slip = e->PositiveQuantity(dim::kLength);
   if (auto s = c.Find("self")) contact.self = s->Boolean();

@@ -228,10 +228,15 @@ nlohmann::ordered_json SceneToJson(const Scene& scene) {
     contact["self"] = scene.contact->self;
     if (scene.contact->thickness) contact["thickness"] = *scene.contact->thickness;
     if (scene.contact->friction_slip) contact["friction_slip"] = *scene.contact->friction_slip;
-    if (scene.contact->penalty)
+    if (scene.contact->law == ContactLaw::kBarrier) {
+      contact["law"] = "barrier";
+      if (scene.contact->barrier_distance)
+        contact["barrier_distance"] = *scene.contact->barrier_distance;
+    } else if (scene.contact->penalty) {
       contact["penalty"] = *scene.contact->penalty;
-    else
+    } else {
       contact["penalty"] = "auto";
+    }
     j["contact"] = contact;
   }
   j["gravity"] = {{"direction", scene.gravity_direction}};

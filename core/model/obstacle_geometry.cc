@@ -24,6 +24,7 @@ Vector3d AnyPerpendicular(const Vector3d& a) {
 
 class PlaneGeometry final : public ObstacleGeometry {
  public:
+  bool IsConvex() const override { return true; }
   explicit PlaneGeometry(const PlaneShape& s)
       : point_(ToEigen(s.point)), normal_(ToEigen(s.normal).normalized()) {}
 
@@ -37,6 +38,7 @@ class PlaneGeometry final : public ObstacleGeometry {
 
 class SphereGeometry final : public ObstacleGeometry {
  public:
+  bool IsConvex() const override { return true; }
   explicit SphereGeometry(const SphereShape& s) : center_(ToEigen(s.center)), radius_(s.radius) {}
 
   DistanceQuery Query(const Vector3d& x) const override {
@@ -57,6 +59,7 @@ class SphereGeometry final : public ObstacleGeometry {
 // the axis) and, outside both, the rim circle.
 class CylinderGeometry final : public ObstacleGeometry {
  public:
+  bool IsConvex() const override { return true; }
   explicit CylinderGeometry(const CylinderShape& s)
       : point_(ToEigen(s.point)),
         axis_(ToEigen(s.axis).normalized()),
@@ -105,6 +108,7 @@ class CylinderGeometry final : public ObstacleGeometry {
 // continuous wherever the radius is positive.
 class BoxGeometry final : public ObstacleGeometry {
  public:
+  bool IsConvex() const override { return true; }
   explicit BoxGeometry(const BoxShape& s) : radius_(s.edge_radius) {
     const Vector3d lo = ToEigen(s.min), hi = ToEigen(s.max);
     center_ = 0.5 * (lo + hi);

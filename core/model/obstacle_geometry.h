@@ -26,6 +26,10 @@ class ObstacleGeometry {
  public:
   virtual ~ObstacleGeometry() = default;
   virtual DistanceQuery Query(const Eigen::Vector3d& x) const = 0;
+  // Whether the obstacle is a convex body: its distance is then a convex
+  // function outside it, so d(x + s) ≥ d(x) + ∇d(x)·s for every s (what a
+  // step's collision bound relies on).
+  virtual bool IsConvex() const { return false; }
 };
 
 // The geometry of a scene's obstacle. A mesh obstacle's file is read relative

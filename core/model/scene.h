@@ -214,9 +214,17 @@ struct Obstacle {
   friend bool operator==(const Obstacle&, const Obstacle&) = default;
 };
 
+// How obstacles push on the fabric (core/contact/node_contact.h): a penalty
+// on how far the fabric's surface is inside, or a barrier that keeps it out.
+enum class ContactLaw { kPenalty, kBarrier };
+
 struct Contact {
+  ContactLaw law = ContactLaw::kPenalty;
   std::optional<double> penalty;  // [N/m³] per unit area; absent = "auto"
-  double friction = 0;            // Coulomb μ
+  // d̂ of the barrier: it acts while the fabric's surface is nearer than
+  // this to an obstacle [m]; absent: half the thickness.
+  std::optional<double> barrier_distance;
+  double friction = 0;  // Coulomb μ
   // ε: the slip at which friction turns from sticking to sliding [m];
   // absent: DefaultFrictionSlip (core/contact/node_contact.h).
   std::optional<double> friction_slip;

@@ -36,6 +36,7 @@ StageOutcome SnapAtBifurcation(SolveRun& run,
       settings.imperfection.size() == sw.mode.size() && sw.mode.dot(settings.imperfection) < 0;
   Eigen::VectorXd push = run.dofs->Expand(sw.mode);
   push *= (against ? -1 : 1) * settings.amplitude / std::max(MaxTranslation(push), 1e-300);
+  push *= run.system->StepBound(start.pushed, push);  // not into an obstacle's barrier
   ApplyIncrement(push, start.pushed);
   return Snap(run, index, loading, start, sw.bifurcation.has_value(), stage, reached);
 }

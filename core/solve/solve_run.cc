@@ -12,7 +12,8 @@ SolveRun::SolveRun(const Scene& s, ShellModel m, const SolverOptions& o)
       model(std::move(m)),
       released(model.grippers.size(), false),
       contact(MakeNodeContact(scene, model)),
-      augment_contact(contact && !(scene.contact && scene.contact->penalty)) {}
+      augment_contact(contact && !contact->HasBarrier() &&
+                      !(scene.contact && scene.contact->penalty)) {}
 
 DofMap SolveRun::StageDofs() const {
   DofMap d(model.NodeCount());

@@ -164,6 +164,30 @@ const std::vector<MalformedCase>& Cases() {
        [](json& j) { j["contact"]["friction_slip"] = "1 m"; },
        "contact.friction_slip: the slip at which friction slides (1000 mm) must be smaller than "
        "the part"},
+      {"unknown contact law",
+       [](json& j) { j["contact"]["law"] = "spring"; },
+       "contact.law: 'spring' is not valid"},
+      {"a barrier with a penalty",
+       [](json& j) { j["contact"]["law"] = "barrier"; },
+       "contact.penalty: a penalty belongs to contact.law \"penalty\"; this contact is a barrier"},
+      {"a barrier distance under the penalty law",
+       [](json& j) { j["contact"]["barrier_distance"] = "0.1 mm"; },
+       "contact.barrier_distance: a barrier distance belongs to contact.law \"barrier\""},
+      {"non-positive barrier distance",
+       [](json& j) {
+         j["contact"]["law"] = "barrier";
+         j["contact"].erase("penalty");
+         j["contact"]["barrier_distance"] = "-1 mm";
+       },
+       "contact.barrier_distance: must be greater than zero"},
+      {"barrier distance as large as the part",
+       [](json& j) {
+         j["contact"]["law"] = "barrier";
+         j["contact"].erase("penalty");
+         j["contact"]["barrier_distance"] = "1 m";
+       },
+       "contact.barrier_distance: the distance at which the barrier acts (1000 mm) must be "
+       "smaller than the part"},
       {"no stages",
        [](json& j) { j["stages"] = json::array(); },
        "stages: a scene needs at least one stage"},

@@ -143,7 +143,7 @@ TEST(NodeContact, TangentBlocksMatchFiniteDifferencesOnEveryShape) {
     for (double stabilization : {0.0, 30.0}) {
       std::vector<NamedObstacle> obstacles;
       obstacles.push_back({c.obstacle.name, MakeObstacleGeometry(c.obstacle, ".")});
-      NodeContact contact(model, std::move(obstacles), penalty, stabilization);
+      NodeContact contact(model, std::move(obstacles), NormalLaw{penalty}, stabilization);
       for (int i = 0; i < nodes; ++i)
         ASSERT_NEAR(contact.nodal_area()[i], area[i], 1e-12 * area[i]) << "node " << i;
 

@@ -222,6 +222,30 @@ TEST_F(Widgets, ObstaclesAreAddedEditedAsJsonAndDraggedInTheView) {
   EXPECT_TRUE(doc->scene().contact->self);
   EXPECT_TRUE(panel->selfContact()->isChecked());
 
+  // The barrier law: its distance field takes the penalty's place, friction
+  // stays editable, and switching back (undo) restores the penalty.
+  EXPECT_TRUE(panel->penalty()->isEnabled());
+  EXPECT_FALSE(panel->barrierDistance()->isEnabled());
+  ASSERT_TRUE(panel->setContactLaw("barrier")) << panel->message().toStdString();
+  EXPECT_EQ(doc->scene().contact->law, ContactLaw::kBarrier);
+  EXPECT_FALSE(doc->scene().contact->penalty.has_value());
+  EXPECT_EQ(panel->contactLaw()->currentText().toStdString(), "barrier");
+  EXPECT_FALSE(panel->penalty()->isEnabled());
+  EXPECT_TRUE(panel->barrierDistance()->isEnabled());
+  EXPECT_EQ(panel->barrierDistance()->text().toStdString(), "auto");
+  ASSERT_TRUE(panel->setBarrierDistance("0.1 mm")) << panel->message().toStdString();
+  EXPECT_DOUBLE_EQ(*doc->scene().contact->barrier_distance, 1e-4);
+  EXPECT_FALSE(panel->setBarrierDistance("-1 mm"));
+  EXPECT_NE(panel->message().toStdString().find("contact.barrier_distance"), std::string::npos)
+      << panel->message().toStdString();
+  ASSERT_TRUE(panel->setContact("auto", "0.25")) << panel->message().toStdString();
+  EXPECT_EQ(doc->scene().contact->friction, 0.25);
+  EXPECT_EQ(doc->scene().contact->law, ContactLaw::kBarrier);
+  for (int k = 0; k < 3; ++k) doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene().contact->law, ContactLaw::kPenalty);
+  EXPECT_EQ(panel->contactLaw()->currentText().toStdString(), "penalty");
+  EXPECT_TRUE(panel->penalty()->isEnabled());
+
   // Removing the table a stage does not move: allowed, and undone.
   panel->list()->setCurrentRow(0);
   ASSERT_TRUE(panel->removeSelected()) << panel->message().toStdString();

@@ -56,12 +56,28 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   auto* apply = new QPushButton("Apply", this);
   layout->addWidget(apply);
   auto* contact = new QFormLayout;
+  law_ = new QComboBox(this);
+  law_->addItems({"penalty", "barrier"});
+  law_->setToolTip(
+      "How obstacles push on the fabric (contact.law): penalty, a pressure in proportion to how "
+      "far the fabric is inside; barrier, a force that grows without bound as the fabric's "
+      "surface nears the obstacle, so it never gets inside (the fabric must start clear of it)");
   penalty_ = new QLineEdit(this);
   penalty_->setToolTip("\"auto\" (from the fabric's stiffness) or a value, e.g. 1e8 N/m^3");
+  barrier_ = new QLineEdit(this);
+  barrier_->setToolTip(
+      "The gap below which the barrier pushes: \"auto\" (half the thickness) or a length, e.g. "
+      "0.1 mm");
   friction_ = new QLineEdit(this);
   friction_->setToolTip("Coulomb coefficient μ, 0 for frictionless");
+  contact->addRow("contact law", law_);
   contact->addRow("contact penalty", penalty_);
+  contact->addRow("barrier distance", barrier_);
   contact->addRow("friction μ", friction_);
+  connect(law_, &QComboBox::activated, this, [this] { setContactLaw(law_->currentText()); });
+  connect(barrier_, &QLineEdit::editingFinished, this, [this] {
+    if (barrier_->text() != barrier_shown_) setBarrierDistance(barrier_->text());
+  });
   self_ = new QCheckBox("keep the fabric's layers a thickness apart", this);
   self_->setToolTip(
       "Self-contact (contact.self): where the fabric folds onto itself, a barrier keeps its "
@@ -131,18 +147,46 @@ bool ObstaclesPanel::applyText(const QString& text) {
                     document);
 }
 
-bool ObstaclesPanel::setContact(const QString& penalty, const QString& friction) {
-  nlohmann::json document = document_->json();
-  // The other contact keys (self-contact) stay as they are.
-  document["contact"]["penalty"] =
-      penalty.trimmed() == "auto" ? nlohmann::json("auto") : TypedQuantity(penalty);
-  document["contact"]["friction"] = TypedQuantity(friction);
-  const bool done = ApplyOrSay(document_,
-                               message_,
-                               QString("contact: penalty %1, friction %2").arg(penalty, friction),
-                               document);
+bool ObstaclesPanel::ApplyContact(const QString& what, nlohmann::json document) {
+  const bool done = ApplyOrSay(document_, message_, what, std::move(document));
   if (!done) refresh();  // the fields show the scene's values again
   return done;
+}
+
+bool ObstaclesPanel::setContact(const QString& penalty, const QString& friction) {
+  nlohmann::json document = document_->json();
+  // The other contact keys (law, self-contact) stay as they are.
+  const bool barrier = document_->scene().contact.value_or(Contact{}).law == ContactLaw::kBarrier;
+  if (!barrier)
+    document["contact"]["penalty"] =
+        penalty.trimmed() == "auto" ? nlohmann::json("auto") : TypedQuantity(penalty);
+  document["contact"]["friction"] = TypedQuantity(friction);
+  return ApplyContact(barrier ? QString("contact: friction %1").arg(friction)
+                              : QString("contact: penalty %1, friction %2").arg(penalty, friction),
+                      document);
+}
+
+bool ObstaclesPanel::setContactLaw(const QString& law) {
+  nlohmann::json document = document_->json();
+  nlohmann::json& contact = document["contact"];
+  contact["law"] = law.toStdString();
+  // Each law's own setting goes with it.
+  if (law == "barrier") {
+    contact.erase("penalty");
+  } else {
+    contact.erase("barrier_distance");
+    if (!contact.contains("penalty")) contact["penalty"] = "auto";
+  }
+  return ApplyContact("contact law: " + law, document);
+}
+
+bool ObstaclesPanel::setBarrierDistance(const QString& distance) {
+  nlohmann::json document = document_->json();
+  if (distance.trimmed() == "auto")
+    document["contact"].erase("barrier_distance");
+  else
+    document["contact"]["barrier_distance"] = TypedQuantity(distance);
+  return ApplyContact("barrier distance " + distance, document);
 }
 
 bool ObstaclesPanel::setSelfContact(bool on) {
@@ -200,9 +244,20 @@ void ObstaclesPanel::ShowContact() {
   penalty_shown_ = contact.penalty
                        ? QuantityText(*contact.penalty, Measure::kPenaltyPerArea, units_)
                        : QString("auto");
+  barrier_shown_ = contact.barrier_distance
+                       ? QuantityText(*contact.barrier_distance, Measure::kLength, units_)
+                       : QString("auto");
   friction_shown_ = QString::number(contact.friction);
   penalty_->setText(penalty_shown_);
+  barrier_->setText(barrier_shown_);
   friction_->setText(friction_shown_);
+  const bool barrier = contact.law == ContactLaw::kBarrier;
+  {
+    const QSignalBlocker block(law_);
+    law_->setCurrentIndex(barrier ? 1 : 0);
+  }
+  penalty_->setEnabled(!barrier);
+  barrier_->setEnabled(barrier);
   const QSignalBlocker block(self_);
   self_->setChecked(contact.self);
 }

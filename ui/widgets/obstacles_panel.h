@@ -1,11 +1,14 @@
 // The rigid obstacles of a scene: add a table, block, rod or sphere, edit
 // one as the scene file writes it (JSON, units allowed: "5 cm"), remove
-// one; and the contact's penalty and friction. The text is read by the scene reader, so a wrong key
+// one; and the contact's law (penalty or barrier), its penalty or barrier
+// distance, and friction. The text is read by the scene reader, so a wrong key
 // or value gets the reader's message naming it. The selected obstacle also gets a handle in the
 // viewport to move it (MainWindow).
 #pragma once
 
 #include <QWidget>
+
+#include <nlohmann/json.hpp>
 
 #include "core/model/unit_system.h"
 
@@ -36,12 +39,18 @@ class ObstaclesPanel : public QWidget {
   // The selected obstacle from its JSON text.
   bool applyText(const QString& json);
   // How the fabric touches every obstacle: penalty k per area ("auto" or,
-  // e.g., "1e8 N/m^3") and Coulomb friction μ.
+  // e.g., "1e8 N/m^3"; ignored under the barrier law) and Coulomb friction μ.
   bool setContact(const QString& penalty, const QString& friction);
+  // contact.law: "penalty" or "barrier".
+  bool setContactLaw(const QString& law);
+  // The barrier's distance d̂ ("auto": half the thickness, or e.g. "0.1 mm").
+  bool setBarrierDistance(const QString& distance);
   // Whether the fabric's layers are kept a thickness apart (contact.self).
   bool setSelfContact(bool on);
   QCheckBox* selfContact() const { return self_; }
   QLineEdit* penalty() const { return penalty_; }
+  QLineEdit* barrierDistance() const { return barrier_; }
+  QComboBox* contactLaw() const { return law_; }
 
  public slots:
   void refresh();
@@ -61,9 +70,13 @@ class ObstaclesPanel : public QWidget {
   QListWidget* list_;
   QComboBox* kind_;
   QPlainTextEdit* text_;
-  QLineEdit *penalty_, *friction_;
+  bool ApplyContact(const QString& what, nlohmann::json document);
+
+  QComboBox* law_;
+  QLineEdit *penalty_, *barrier_, *friction_;
   QCheckBox* self_;
-  QString penalty_shown_, friction_shown_;  // as refresh() wrote them
+  // As refresh() wrote them.
+  QString penalty_shown_, barrier_shown_, friction_shown_;
   QLabel* message_;
   QLabel* text_label_ = nullptr;
   UnitSystem units_ = UnitSystem::kSI;
