@@ -24,6 +24,8 @@ const char* ToString(SnapTrigger trigger) {
       return "start";
     case SnapTrigger::kSliding:
       return "sliding";
+    case SnapTrigger::kRelease:
+      return "release";
   }
   return "?";
 }

@@ -22,11 +22,13 @@ enum class Branch {
 // mechanism: a sheet held at two corners swings about the line through them).
 // kSliding: a part held only by contact whose every node in contact slides
 // (its stabilisation springs carry what friction cannot), or that would not
-// settle at a stage's end.
-enum class SnapTrigger { kLimit, kBifurcation, kStart, kSliding };
-const char* ToString(StabilityKind kind);   // "limit", "bifurcation", "snap"
-const char* ToString(Branch branch);        // "fundamental", "stable", "none"
-const char* ToString(SnapTrigger trigger);  // "limit", "bifurcation", "start", "sliding"
+// settle at a stage's end. kRelease: a hold stage that releases grippers
+// from a state the part cannot rest in without them.
+enum class SnapTrigger { kLimit, kBifurcation, kStart, kSliding, kRelease };
+const char* ToString(StabilityKind kind);  // "limit", "bifurcation", "snap"
+const char* ToString(Branch branch);       // "fundamental", "stable", "none"
+// "limit", "bifurcation", "start", "sliding", "release"
+const char* ToString(SnapTrigger trigger);
 
 // A change in the number of negative pivots between two converged steps: the
 // path crossed a limit or bifurcation point.

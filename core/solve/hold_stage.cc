@@ -29,7 +29,20 @@ StageOutcome SettleByJump(SolveRun& run,
 }  // namespace
 
 StageOutcome RunHold(SolveRun& run, int index, const StageLoading& loading, StageSummary& stage) {
+  const ShellState held = run.state;
   const NewtonOutcome newton = run.SolveAtFixedLambda(1.0, loading);
+  // Released where it cannot rest without its grippers (pressed into an
+  // obstacle, stretched against friction), the part jumps: Newton from the
+  // held state may not reach where it lands, the minimiser does.
+  if (newton.status != NewtonOutcome::Status::kConverged &&
+      newton.status != NewtonOutcome::Status::kCancelled &&
+      !run.scene.stages[index].release.empty()) {
+    run.CountIterations(newton.iterations, stage);
+    run.state = held;
+    const SnapStart start{PathPoint{run.state, 1.0, {}}, run.state, 1.0, SnapTrigger::kRelease, 0};
+    PathPoint landed;
+    return Snap(run, index, loading, start, /*record_before=*/false, stage, landed);
+  }
   if (StageOutcome o = run.FixedLambdaOutcome(newton, stage, "found no equilibrium"); !o.GoesOn())
     return o;
   stage.steps = 1;

@@ -109,6 +109,14 @@ void AddEndOfRunWarnings(SolveRun& run) {
                100 * s.worst_missed_penetration / thickness,
                s.worst_missed_step,
                s.worst_missed_reason.c_str()));
+  if (s.friction_unsettled > 0)
+    s.warnings.push_back(
+        Format("contact: friction's normal forces had not settled in %d step%s "
+               "(the first, step %d: %s)",
+               s.friction_unsettled,
+               s.friction_unsettled == 1 ? "" : "s",
+               s.first_unsettled_step,
+               s.unsettled_reason.c_str()));
 }
 
 void Conclude(SolveRun& run, const StageOutcome& outcome) {

@@ -63,6 +63,8 @@ const char* SnapCause(SnapTrigger trigger) {
       return "past a bifurcation point";
     case SnapTrigger::kSliding:
       return "every node in contact slides, held only by the stabilisation springs, so";
+    case SnapTrigger::kRelease:
+      return "released from its grippers where it cannot rest without them,";
   }
   return "?";
 }

@@ -17,6 +17,8 @@ const char* SnapPlace(SnapTrigger trigger) {
       return "bifurcation";
     case SnapTrigger::kSliding:
       return "state where every node in contact slid, held only by the stabilisation springs";
+    case SnapTrigger::kRelease:
+      return "release";
   }
   return "?";
 }

@@ -94,6 +94,11 @@ struct SolveSummary {
   double worst_missed_penetration = 0;  // [m]
   int worst_missed_step = 0;
   std::string worst_missed_reason;
+  // Steps whose friction lag still moved after the contact passes (no
+  // penetration target missed): how many, the first, and why.
+  int friction_unsettled = 0;
+  int first_unsettled_step = 0;
+  std::string unsettled_reason;
   int branch_switches = 0;  // bifurcations passed onto a secondary branch
 
   double total_s = 0;

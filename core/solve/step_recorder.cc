@@ -60,7 +60,13 @@ void StepRecorder::UpdateSummary(const StepState& step) {
   summary_.max_law_curvature = std::max(summary_.max_law_curvature, step.law_curvature);
   if (step.contact) {
     const ContactReport& c = *step.contact;
-    if (!c.augmentation_shortfall.empty()) {
+    const bool deep = c.penetration_target > 0 && c.max_penetration > c.penetration_target;
+    if (!c.augmentation_shortfall.empty() && !deep) {
+      if (summary_.friction_unsettled++ == 0) {
+        summary_.first_unsettled_step = step.step;
+        summary_.unsettled_reason = c.augmentation_shortfall;
+      }
+    } else if (!c.augmentation_shortfall.empty()) {
       ++summary_.penetration_target_missed;
       if (c.max_penetration > summary_.worst_missed_penetration) {
         summary_.worst_missed_penetration = c.max_penetration;
