@@ -163,7 +163,10 @@ Frame FrameOf(const RunInput& run, size_t i) {
   f.step = static_cast<int>(i);
   f.stage_name = run.stage_names[i];
   f.lambda = run.lambdas[i];
-  if (i + 1 == run.states.size() && run.is_result) f.contact_pressure = run.final_contact_pressure;
+  if (i + 1 == run.states.size() && run.is_result) {
+    f.contact_pressure = run.final_contact_pressure;
+    f.friction_state = run.final_friction_state;
+  }
   return f;
 }
 

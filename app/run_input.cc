@@ -55,6 +55,7 @@ RunInput ReadRunInput(const fs::path& input) {
     run.lambdas.push_back(record.steps[i].lambda);
   }
   run.final_contact_pressure = record.final_contact_pressure;
+  run.final_friction_state = record.final_friction_state;
   return run;
 }
 

@@ -21,6 +21,7 @@ struct RunInput {
   std::vector<int> stages;                     // per state, index in scene.stages (−1: reference)
   std::vector<double> lambdas;                 // per state
   std::vector<double> final_contact_pressure;  // per node at the last state, or empty
+  std::vector<double> final_friction_state;    // the same: 0 none, 1 sticking, 2 sliding
   bool is_result = false;
 };
 

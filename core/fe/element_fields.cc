@@ -75,6 +75,7 @@ const std::vector<FieldInfo>& Fields() {
       {FieldKind::kMembraneStrain, "strain", "membrane strain [-]", false},
       {FieldKind::kElementEnergy, "energy", "strain energy [J/m^2]", false},
       {FieldKind::kContactPressure, "pressure", "contact pressure [Pa]", true},
+      {FieldKind::kFrictionState, "slip", "friction: 1 sticking, 2 sliding [-]", true},
   };
   return fields;
 }
@@ -126,9 +127,11 @@ Eigen::VectorXd EvaluateField(FieldKind kind, const ShellModel& model, const She
         return energy.value / area;
       });
     case FieldKind::kContactPressure:
+    case FieldKind::kFrictionState:
       break;
   }
-  throw std::invalid_argument("contact pressure comes from the contact model, not the elements");
+  throw std::invalid_argument(
+      "contact pressure and friction come from the contact model, not the elements");
 }
 
 }  // namespace drape

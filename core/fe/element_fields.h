@@ -27,13 +27,20 @@ double MaxLawCurvature(const ShellModel& model, const ShellState& state);
 
 // What a colour field shows.
 enum class FieldKind {
-  kDisplacement,    // |φ − φ₀| per node [m]
-  kCurvature,       // largest principal |κ| per element [1/m]
-  kBendingMoment,   // largest principal |m| per element [N·m/m]
-  kMembraneStrain,  // largest principal |ε| per element (Green–Lagrange) [–]
-  kElementEnergy,   // strain energy per reference area per element [J/m²]
-  kContactPressure  // normal contact force per node area [Pa]
+  kDisplacement,     // |φ − φ₀| per node [m]
+  kCurvature,        // largest principal |κ| per element [1/m]
+  kBendingMoment,    // largest principal |m| per element [N·m/m]
+  kMembraneStrain,   // largest principal |ε| per element (Green–Lagrange) [–]
+  kElementEnergy,    // strain energy per reference area per element [J/m²]
+  kContactPressure,  // normal contact force per node area [Pa]
+  kFrictionState     // per node: 0 no friction, 1 sticking, 2 sliding
 };
+
+// Whether the field comes from the contact model (a step's ContactReport),
+// not from the elements.
+inline bool FromContact(FieldKind kind) {
+  return kind == FieldKind::kContactPressure || kind == FieldKind::kFrictionState;
+}
 
 struct FieldInfo {
   FieldKind kind;

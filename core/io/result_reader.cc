@@ -122,6 +122,8 @@ RunRecord ReadRunRecord(const fs::path& path) {
     }
     if (r.contains("final") && r["final"].contains("contact_pressure"))
       record.final_contact_pressure = r["final"]["contact_pressure"].get<std::vector<double>>();
+    if (r.contains("final") && r["final"].contains("friction_state"))
+      record.final_friction_state = r["final"]["friction_state"].get<std::vector<double>>();
   } catch (const SceneError& e) {
     Fail(file, std::string("scene_resolved: ") + e.what());
   } catch (const json::exception& e) {

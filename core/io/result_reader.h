@@ -33,6 +33,9 @@ struct RunRecord {
   std::vector<StoredStep> states;              // positions and directors per step
   std::vector<RecordedStep> steps;             // what result.json says of each
   std::vector<double> final_contact_pressure;  // per node, last step; empty without contact
+  // Per node, last step: 0 no friction, 1 sticking, 2 sliding; empty
+  // without friction.
+  std::vector<double> final_friction_state;
 };
 
 // `path` is a result folder or its result.json. Throws std::runtime_error

@@ -272,7 +272,14 @@ nlohmann::json ResultWriter::Document(const SolveSummary& summary,
     final_state["step"] = impl_->last.step;
     final_state["positions"] = std::move(positions);
     final_state["probes"] = Named(impl_->last.probes);
-    if (impl_->last.contact) final_state["contact_pressure"] = impl_->last.contact->pressure;
+    if (impl_->last.contact) {
+      final_state["contact_pressure"] = impl_->last.contact->pressure;
+      if (impl_->last.contact->with_friction) {
+        json slip = json::array();
+        for (SlipState s : impl_->last.contact->friction) slip.push_back(static_cast<int>(s));
+        final_state["friction_state"] = std::move(slip);
+      }
+    }
   }
   r["final"] = std::move(final_state);
   r["timing"] = {{"total_s", summary.total_s},

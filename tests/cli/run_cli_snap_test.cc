@@ -174,6 +174,10 @@ TEST(RunCliSnap, ASheetOnATableLessSteepThanItsFrictionStaysWhereItLies) {
   const json& friction = result["steps"].back()["contact"]["friction"];
   EXPECT_EQ(friction["sliding"], 0);
   EXPECT_EQ(friction["sticking"], 121);  // the 11 × 11 nodes
+  // The same per node at the last step, for the workbench's "slip" field.
+  const json& states = result["final"]["friction_state"];
+  ASSERT_EQ(states.size(), 121u);
+  for (const json& s : states) EXPECT_EQ(s, 1);
   const double weight = kWeight * 0.1 * 0.1;
   const double sine = std::sin(std::atan(0.98 * 0.3));
   EXPECT_NEAR(friction["force"][0].get<double>(), -weight * sine, 1e-6 * weight);

@@ -190,6 +190,50 @@ TEST_F(FrameRendererTest, CurvatureFieldSpansTheColourMap) {
   }
 }
 
+// The friction field of a flat sheet seen from the top, its left half
+// sticking (1) and its right half sliding (2): the field's fixed range
+// [0, 2] puts sliding at viridis's yellow end (hue 54°) and sticking at its
+// middle, teal (33, 145, 140; hue 177°); a frame without the field's values
+// (a run without friction, or an earlier step) is one message.
+TEST_F(FrameRendererTest, FrictionFieldShowsStickingAndSlidingNodes) {
+  const Scene scene = FlatSheet();
+  const ShellModel model = BuildShellModel(scene);
+  RenderOptions options = Bare(640, 480);
+  options.camera.view = "top";
+  options.field = FieldKind::kFrictionState;
+  ShellState state = model.reference;
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&state}));
+  Frame frame;
+  frame.state = &state;
+  EXPECT_THROW(
+      {
+        try {
+          renderer.Show(frame);
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find("stick and slide is stored for the last step"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      std::invalid_argument);
+  for (int i = 0; i < model.NodeCount(); ++i)
+    frame.friction_state.push_back(model.reference.positions(i, 0) < 0.1 ? 1.0 : 2.0);
+  renderer.Show(frame);
+  Image image{640, 480, renderer.CaptureRgb()};
+  const Eigen::Vector2d left = Project(renderer, {0.04, 0, 0});
+  const Eigen::Vector2d right = Project(renderer, {0.16, 0, 0});
+  const auto [left_hue, left_saturation] =
+      HueSaturation(image.At(static_cast<int>(left.x()), static_cast<int>(left.y())));
+  const auto [right_hue, right_saturation] =
+      HueSaturation(image.At(static_cast<int>(right.x()), static_cast<int>(right.y())));
+  std::printf("sticking half: hue %.0f°, sliding half: hue %.0f°\n", left_hue, right_hue);
+  EXPECT_GT(left_saturation, 0.5);
+  EXPECT_GT(right_saturation, 0.5);
+  EXPECT_NEAR(left_hue, 177, 15);
+  EXPECT_NEAR(right_hue, 54, 10);
+}
+
 TEST_F(FrameRendererTest, ObstaclesAndGrippersAreWhereTheSceneSays) {
   Scene scene = FlatSheet();
   // A sphere beside the sheet and a gripper at its far corner.

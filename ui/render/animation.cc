@@ -46,9 +46,10 @@ int WriteAnimation(const AnimationInput& input,
   if (options.duration < 0) throw std::invalid_argument("--duration: must be positive");
   if (input.states.size() < 2)
     throw std::invalid_argument("an animation needs a run: at least one converged step");
-  if (options.view.field && *options.view.field == FieldKind::kContactPressure)
+  if (options.view.field && FromContact(*options.view.field))
     throw std::invalid_argument(
-        "--field pressure: contact pressure is stored for the last step only; render that step");
+        "--field pressure and slip: contact pressure and friction are stored for the last step "
+        "only; render that step");
   const Scene& scene = *input.scene;
   const ShellModel& model = *input.model;
   std::optional<std::array<double, 2>> range;

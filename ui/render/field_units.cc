@@ -18,6 +18,8 @@ Measure FieldMeasure(FieldKind kind) {
       return Measure::kEnergyPerArea;
     case FieldKind::kContactPressure:
       return Measure::kPressure;
+    case FieldKind::kFrictionState:
+      return Measure::kNone;
   }
   throw std::logic_error("a field without a measure");
 }

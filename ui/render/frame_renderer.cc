@@ -387,6 +387,12 @@ struct FrameRenderer::Impl {
               "the contact pressure is stored for the last step of a run with obstacles only");
         values =
             Eigen::Map<const Eigen::VectorXd>(frame.contact_pressure.data(), model.NodeCount());
+      } else if (*options.field == FieldKind::kFrictionState) {
+        if (static_cast<int>(frame.friction_state.size()) != model.NodeCount())
+          throw std::invalid_argument(
+              "which nodes stick and slide is stored for the last step of a run with friction "
+              "only");
+        values = Eigen::Map<const Eigen::VectorXd>(frame.friction_state.data(), model.NodeCount());
       } else {
         values = EvaluateField(*options.field, model, state);
       }
@@ -420,6 +426,8 @@ struct FrameRenderer::Impl {
                                                 (*field_range)[1] / FieldScale()}
                         : std::array<double, 2>{values.size() ? values.minCoeff() : 0.0,
                                                 values.size() ? values.maxCoeff() : 1.0};
+        // Friction's three states keep their colours from frame to frame.
+        if (*options.field == FieldKind::kFrictionState) range = {0.0, 2.0};
         if (!(range[1] > range[0]))
           range[1] = range[0] + std::max(1e-12, std::abs(range[0]) * 1e-6);
         mapper->ScalarVisibilityOn();

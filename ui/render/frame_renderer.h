@@ -66,8 +66,10 @@ struct Frame {
   int step = 0;  // 0: the reference state
   std::string stage_name;
   double lambda = 0;
-  // Per node, for the contact-pressure field (empty: not available).
+  // Per node, for the contact-pressure and friction fields (empty: not
+  // available).
   std::vector<double> contact_pressure;
+  std::vector<double> friction_state;  // 0 none, 1 sticking, 2 sliding
 };
 
 class FrameRenderer {

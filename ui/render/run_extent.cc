@@ -47,6 +47,7 @@ std::array<double, 2> FieldRange(FieldKind kind,
     range[0] = std::min(range[0], v.minCoeff());
     range[1] = std::max(range[1], v.maxCoeff());
   };
+  if (kind == FieldKind::kFrictionState) return {0.0, 2.0};  // none, sticking, sliding
   if (kind == FieldKind::kContactPressure) {
     take(Eigen::Map<const Eigen::VectorXd>(contact_pressure.data(),
                                            static_cast<Eigen::Index>(contact_pressure.size())));

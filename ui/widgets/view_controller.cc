@@ -24,6 +24,14 @@ void ShowChoice(QComboBox* box, const QString& data) {
   box->setCurrentIndex(index);
 }
 
+// The per-node fields a step's contact report carries.
+void SetContactFields(const ContactReport& contact, Frame& frame) {
+  frame.contact_pressure = contact.pressure;
+  if (!contact.with_friction) return;
+  frame.friction_state.clear();
+  for (SlipState s : contact.friction) frame.friction_state.push_back(static_cast<double>(s));
+}
+
 }  // namespace
 
 ViewController::ViewController(VtkViewport* viewport, QWidget* bar_parent, QObject* parent)
@@ -240,7 +248,7 @@ void ViewController::showStep(int index) {
     frame.step = stale_->step;
     frame.stage_name = stale_->stage_name + " (before the edit)";
     frame.lambda = stale_->lambda;
-    if (stale_->contact) frame.contact_pressure = stale_->contact->pressure;
+    if (stale_->contact) SetContactFields(*stale_->contact, frame);
     step_label_->setText(
         QString("step %1 of the last run — stale: edited since").arg(stale_->step));
   } else if (index == 0) {
@@ -252,7 +260,7 @@ void ViewController::showStep(int index) {
     frame.step = s.step;
     frame.stage_name = s.stage_name;
     frame.lambda = s.lambda;
-    if (s.contact) frame.contact_pressure = s.contact->pressure;
+    if (s.contact) SetContactFields(*s.contact, frame);
     step_label_->setText(QString("step %1 of %2 — stage %3, λ = %4")
                              .arg(s.step)
                              .arg(stepCount())
