@@ -162,6 +162,7 @@ Frame FrameOf(const RunInput& run, size_t i) {
   f.state = &run.states[i];
   f.step = static_cast<int>(i);
   f.stage_name = run.stage_names[i];
+  f.stage = run.stages[i];
   f.lambda = run.lambdas[i];
   if (i + 1 == run.states.size() && run.is_result) {
     f.contact_pressure = run.final_contact_pressure;
@@ -291,7 +292,8 @@ int RunAnimate(const AnimateArgs& args) {
     const RunInput run = ReadRunInput(args.input);
     if (!run.is_result)
       throw std::invalid_argument(args.input + ": a scene has one state; animate a result folder");
-    const AnimationInput input{&run.scene, &run.model, Pointers(run), run.stage_names, run.lambdas};
+    const AnimationInput input{
+        &run.scene, &run.model, Pointers(run), run.stage_names, run.lambdas, run.stages};
     g_interrupted = false;
     std::signal(SIGINT, OnInterrupt);
     std::signal(SIGTERM, OnInterrupt);

@@ -260,6 +260,27 @@ TEST_F(FrameRendererTest, ObstaclesAndGrippersAreWhereTheSceneSays) {
   const auto [h_grip, s_grip] = HueSaturation(image.At(int(grip.x()), int(grip.y())));
   EXPECT_GT(s_grip, 0.5);
   EXPECT_TRUE(h_grip < 15 || h_grip > 345) << "hue " << h_grip;
+
+  // A stage that releases it: from that stage's states on, no glyph; the
+  // stage before (here the reference state: no stage yet) still shows it.
+  const int released_in = static_cast<int>(scene.stages.size());
+  Stage release;
+  release.name = "let go";
+  release.kind = StageKind::kHold;
+  release.release = {"corner"};
+  scene.stages.push_back(release);
+  FrameRenderer again(scene, model, options, RunBounds(scene, {&state}));
+  auto at_corner = [&](int stage) {
+    frame.stage = stage;
+    again.Show(frame);
+    Image picture{640, 480, again.CaptureRgb()};
+    const Eigen::Vector2d p = Project(again, {0.2, 0.05, 0});
+    return picture.At(int(p.x()), int(p.y()));
+  };
+  const auto [h_held, s_held] = HueSaturation(at_corner(released_in - 1));
+  EXPECT_TRUE(s_held > 0.5 && (h_held < 15 || h_held > 345)) << "hue " << h_held;
+  const auto [h_free, s_free] = HueSaturation(at_corner(released_in));
+  EXPECT_FALSE(s_free > 0.5 && (h_free < 15 || h_free > 345)) << "hue " << h_free;
 }
 
 // The shipped strip fold's last state seen from above: where the upper

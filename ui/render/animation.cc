@@ -77,6 +77,7 @@ int WriteAnimation(const AnimationInput& input,
     f.state = &state;
     f.step = static_cast<int>(near);
     f.stage_name = input.stage_names[near];
+    if (near < input.stages.size()) f.stage = input.stages[near];
     f.lambda = input.lambdas[near];
     renderer.Show(f);
     sink->Add(renderer.CaptureRgb());

@@ -23,6 +23,7 @@ struct AnimationInput {
   std::vector<const ShellState*> states;  // [0] the reference
   std::vector<std::string> stage_names;   // per state
   std::vector<double> lambdas;            // per state
+  std::vector<int> stages;                // per state (−1: the reference); may be empty
 };
 
 struct AnimationOptions {

@@ -127,7 +127,7 @@ struct FrameRenderer::Impl {
   Ptr<vtkScalarBarActor> bar = Ptr<vtkScalarBarActor>::New();
   std::vector<Ptr<vtkActor>> obstacle_actors;
   std::unique_ptr<Glyphs> supports, grippers;
-  std::vector<int> support_nodes, gripper_nodes;
+  std::vector<int> support_nodes;
   std::vector<Ptr<vtkCaptionActor2D>> probe_labels;
   Ptr<vtkTextActor> overlay = Ptr<vtkTextActor>::New();
   Ptr<vtkActor> ghost = MakeGhostActor();  // hidden until SetGhost
@@ -252,10 +252,20 @@ struct FrameRenderer::Impl {
     grippers = std::make_unique<Glyphs>(1.6 * radius, kGripper);
     for (const auto& s : model.supports)
       support_nodes.insert(support_nodes.end(), s.nodes.begin(), s.nodes.end());
-    for (const auto& g : model.grippers)
-      gripper_nodes.insert(gripper_nodes.end(), g.nodes.begin(), g.nodes.end());
     renderer->AddActor(supports->actor);
     renderer->AddActor(grippers->actor);
+  }
+
+  // The nodes of the grippers still holding at the end of `stage`.
+  std::vector<int> HeldGripperNodes(int stage) const {
+    std::vector<int> nodes;
+    for (const auto& g : model.grippers) {
+      bool released = false;
+      for (int k = 0; k <= stage && k < static_cast<int>(scene.stages.size()); ++k)
+        for (const auto& name : scene.stages[k].release) released = released || name == g.name;
+      if (!released) nodes.insert(nodes.end(), g.nodes.begin(), g.nodes.end());
+    }
+    return nodes;
   }
 
   void AddPaths(double arrow) {
@@ -454,7 +464,7 @@ struct FrameRenderer::Impl {
       obstacle_actors[o]->SetUserMatrix(matrix);
     }
     supports->Place(support_nodes, state);
-    grippers->Place(gripper_nodes, state);
+    grippers->Place(HeldGripperNodes(frame.stage), state);
     for (size_t p = 0; p < probe_labels.size(); ++p) {
       Eigen::Vector3d at = ProbePosition(model, model.probes[p], state);
       probe_labels[p]->SetAttachmentPoint(at.data());

@@ -64,6 +64,9 @@ struct RenderOptions {
 struct Frame {
   const ShellState* state = nullptr;
   int step = 0;  // 0: the reference state
+  // The stage the state ends (−1: unknown, or before the first): grippers
+  // released by then are not drawn.
+  int stage = -1;
   std::string stage_name;
   double lambda = 0;
   // Per node, for the contact-pressure and friction fields (empty: not

@@ -44,6 +44,7 @@ ExportOutcome ExportController::Image(const ExportedRun& run,
       const StepState& s = *run.steps->at(run.current_step - 1);
       frame.state = &s.state;
       frame.step = s.step;
+      frame.stage = s.stage;
       frame.stage_name = s.stage_name;
       frame.lambda = s.lambda;
     }
@@ -61,9 +62,10 @@ ExportOutcome ExportController::Animation(const ExportedRun& run,
                                           double fps) const {
   if (!HasSteps(run)) return {false, false, "nothing to animate: run the scene first"};
   const ShellState reference = ReferenceOf(run);
-  AnimationInput input{run.scene, run.model, {&reference}, {""}, {0.0}};
+  AnimationInput input{run.scene, run.model, {&reference}, {""}, {0.0}, {-1}};
   for (const auto& s : *run.steps) {
     input.states.push_back(&s->state);
+    input.stages.push_back(s->stage);
     input.stage_names.push_back(s->stage_name);
     input.lambdas.push_back(s->lambda);
   }

@@ -246,6 +246,7 @@ void ViewController::showStep(int index) {
     // The last run's end over an edit: what the ghost is to be compared with.
     frame.state = &stale_->state;
     frame.step = stale_->step;
+    frame.stage = stale_->stage;
     frame.stage_name = stale_->stage_name + " (before the edit)";
     frame.lambda = stale_->lambda;
     if (stale_->contact) SetContactFields(*stale_->contact, frame);
@@ -258,6 +259,7 @@ void ViewController::showStep(int index) {
     const StepState& s = *steps_[index - 1];
     frame.state = &s.state;
     frame.step = s.step;
+    frame.stage = s.stage;
     frame.stage_name = s.stage_name;
     frame.lambda = s.lambda;
     if (s.contact) SetContactFields(*s.contact, frame);
