@@ -85,36 +85,45 @@ NormalLaw NormalLawFor(const Scene& scene, const ShellModel& model) {
   // per area w (−b'(d̂/2) = (½ + ln 2) d̂), as the self-contact's does a node's:
   // resting under its weight a node sits near the band's outer edge, and
   // pressed harder, closer in. Without weight, a millionth of the penalty.
-  double area = 0;
-  for (const auto& element : model.elements)
-    for (const auto& gp : element.gauss) area += gp.area;
-  const double weight_per_area = model.total_weight.norm() / std::max(area, 1e-300);
+  const double weight_per_area = model.total_weight.norm() / std::max(ReferenceArea(model), 1e-300);
   law.barrier_stiffness =
       std::max(10 * weight_per_area / ((0.5 + std::log(2.0)) * law.barrier_distance),
                1e-6 * AutoPenalty(model));
   return law;
 }
 
-void CheckFrictionSlip(const Scene& scene, double part_diagonal) {
-  if (!scene.contact || !scene.contact->friction_slip) return;
-  const double slip = *scene.contact->friction_slip;
-  if (slip >= part_diagonal)
-    throw SceneError("contact.friction_slip",
-                     Format("the slip at which friction slides (%.4g mm) must be smaller than the "
-                            "part (its diagonal is %.4g mm)",
-                            1e3 * slip,
+namespace {
+
+// A length of contact (`key`, described as `what`) that must be smaller
+// than the part.
+void CheckSmallerThanPart(const std::optional<double>& length,
+                          const char* key,
+                          const char* what,
+                          double part_diagonal) {
+  if (length && *length >= part_diagonal)
+    throw SceneError(key,
+                     Format("%s (%.4g mm) must be smaller than the part (its diagonal is %.4g mm)",
+                            what,
+                            1e3 * *length,
                             1e3 * part_diagonal));
 }
 
+}  // namespace
+
+void CheckFrictionSlip(const Scene& scene, double part_diagonal) {
+  if (scene.contact)
+    CheckSmallerThanPart(scene.contact->friction_slip,
+                         "contact.friction_slip",
+                         "the slip at which friction slides",
+                         part_diagonal);
+}
+
 void CheckBarrierDistance(const Scene& scene, double part_diagonal) {
-  if (!scene.contact || !scene.contact->barrier_distance) return;
-  const double distance = *scene.contact->barrier_distance;
-  if (distance >= part_diagonal)
-    throw SceneError("contact.barrier_distance",
-                     Format("the distance at which the barrier acts (%.4g mm) must be smaller than "
-                            "the part (its diagonal is %.4g mm)",
-                            1e3 * distance,
-                            1e3 * part_diagonal));
+  if (scene.contact)
+    CheckSmallerThanPart(scene.contact->barrier_distance,
+                         "contact.barrier_distance",
+                         "the distance at which the barrier acts",
+                         part_diagonal);
 }
 
 double LayerExclusion(const ShellModel& model, double element_size) {

@@ -20,10 +20,7 @@ constexpr double kFreshShare = 0.1;
 constexpr double kClose = 0.9;
 
 double MeanElementSize(const ShellModel& model) {
-  double area = 0;
-  for (const auto& element : model.elements)
-    for (const auto& gp : element.gauss) area += gp.area;
-  return std::sqrt(area / std::max(1, model.mesh.ElementCount()));
+  return std::sqrt(ReferenceArea(model) / std::max(1, model.mesh.ElementCount()));
 }
 
 }  // namespace
@@ -414,6 +411,13 @@ double NodeContact::StepBound(const ShellState& state, const Eigen::MatrixX3d& d
     }
   }
   return bound;
+}
+
+double ReferenceArea(const ShellModel& model) {
+  double area = 0;
+  for (const auto& element : model.elements)
+    for (const auto& gp : element.gauss) area += gp.area;
+  return area;
 }
 
 double DefaultFrictionSlip(const ShellModel& model) {

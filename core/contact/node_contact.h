@@ -229,6 +229,9 @@ class NodeContact {
   std::vector<double> multiplier_;
 };
 
+// The fabric's flat (reference) area, over the Gauss points [m²].
+double ReferenceArea(const ShellModel& model);
+
 // ε for `contact.friction_slip` left out: 1e-3 of the mean element size, so
 // a sticking node creeps far less than the mesh resolves [m].
 double DefaultFrictionSlip(const ShellModel& model);
