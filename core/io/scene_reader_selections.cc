@@ -5,9 +5,9 @@
 namespace drape {
 
 Selection SceneParser::ReadSelection(const JsonCursor& c) {
-  c.ExpectObject({"point", "line", "box", "corners", "edge", "nodes", "tolerance"});
+  c.ExpectObject({"point", "line", "box", "circle", "corners", "edge", "nodes", "tolerance"});
   Selection s;
-  switch (c.OneOf({"point", "line", "box", "corners", "edge", "nodes"})) {
+  switch (c.OneOf({"point", "line", "box", "circle", "corners", "edge", "nodes"})) {
     case 0:
       s.shape = PointSelection{c["point"].QuantityVec2(dim::kLength)};
       break;
@@ -27,11 +27,18 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
       s.shape = box;
       break;
     }
-    case 3:
+    case 3: {
+      const JsonCursor circle = c["circle"];
+      circle.ExpectObject({"center", "radius"});
+      s.shape = CircleSelection{circle["center"].QuantityVec2(dim::kLength),
+                                circle["radius"].PositiveQuantity(dim::kLength)};
+      break;
+    }
+    case 4:
       if (!c["corners"].Boolean()) c["corners"].Fail("write \"corners\": true to select corners");
       s.shape = CornersSelection{};
       break;
-    case 4: {
+    case 5: {
       int side = c["edge"].Choice({"left", "right", "bottom", "top", "boundary"});
       s.shape = EdgeSelection{static_cast<Side>(side)};
       break;

@@ -102,6 +102,9 @@ json ToJson(const Selection& s) {
                           [](const BoxSelection& b) {
                             return json{{"box", {b.min, b.max}}};
                           },
+                          [](const CircleSelection& c) {
+                            return json{{"circle", {{"center", c.center}, {"radius", c.radius}}}};
+                          },
                           [](const CornersSelection&) {
                             return json{{"corners", true}};
                           },

@@ -102,6 +102,11 @@ std::vector<int> SelectNodes(const Selection& selection, const Mesh& mesh, const
                      q[1] <= b.max[1] + tol;
             });
           },
+          [&](const CircleSelection& c) {
+            return NodesWhere(mesh, [&](const Vec2& q) {
+              return std::hypot(q[0] - c.center[0], q[1] - c.center[1]) <= c.radius + tol;
+            });
+          },
           [&](const CornersSelection&) {
             auto corners = OutlineCorners(outline);
             if (corners.empty()) throw SelectionError("a disk has no corners");

@@ -128,6 +128,12 @@ struct BoxSelection {
   Vec2 min{0, 0}, max{0, 0};
   friend bool operator==(const BoxSelection&, const BoxSelection&) = default;
 };
+// Every node within `radius` of `center`: the clamped disc of a drape tester.
+struct CircleSelection {
+  Vec2 center{0, 0};
+  double radius = 0;  // [m], > 0
+  friend bool operator==(const CircleSelection&, const CircleSelection&) = default;
+};
 struct CornersSelection {
   friend bool operator==(const CornersSelection&, const CornersSelection&) = default;
 };
@@ -142,6 +148,7 @@ struct NodesSelection {
 using SelectionShape = std::variant<PointSelection,
                                     LineSelection,
                                     BoxSelection,
+                                    CircleSelection,
                                     CornersSelection,
                                     EdgeSelection,
                                     NodesSelection>;

@@ -135,6 +135,21 @@ const std::vector<MalformedCase>& Cases() {
          j["grippers"][0]["select"] = {{"nodes", {0, 999}}};
        },
        "grippers[0].select: node 999 does not exist"},
+      {"circle of zero radius",
+       [](json& j) {
+         j["grippers"][0]["select"] = {{"circle", {{"center", {0, 0}}, {"radius", "0 cm"}}}};
+       },
+       "grippers[0].select.circle.radius: must be greater than zero"},
+      {"circle without a centre",
+       [](json& j) {
+         j["grippers"][0]["select"] = {{"circle", {{"radius", "9 cm"}}}};
+       },
+       "grippers[0].select.circle: missing required key 'center'"},
+      {"circle that misses every node",
+       [](json& j) {
+         j["grippers"][0]["select"] = {{"circle", {{"center", {"5 m", 0}}, {"radius", "1 cm"}}}};
+       },
+       "grippers[0].select: 'end' matched no node"},
       {"duplicate names",
        [](json& j) {
          j["supports"] = {{{"name", "end"}, {"select", {{"edge", "right"}}}}};

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/model/outline_geometry.h"
 #include "core/model/scene_error.h"
 
@@ -57,6 +59,23 @@ TEST(NodeSelection, LineCountsNodesOnTheSegment) {
     EXPECT_EQ(Count(BoxSelection{{-0.05, -0.05}, {0.05, 0.05}}, mesh, square),
               size_t((n / 2 + 1) * (n / 2 + 1)));
   }
+}
+
+// Lattice points within r of a lattice point: Gauss's circle problem,
+// N(r) for r² = 1, 2, 4, 5, 8, 9, 10 is 5, 9, 13, 21, 25, 29, 37 (OEIS A057655).
+TEST(NodeSelection, CircleCountsTheLatticePointsOfGausssCircleProblem) {
+  const RectangleOutline square{{0.2, 0.2}, {0, 0}};
+  Mesh mesh = MeshRectangle(0.2, 0.2, {0, 0}, 20, 20, 0.0);  // 1 cm spacing
+  const std::pair<double, size_t> expected[] = {
+      {1, 5}, {2, 9}, {4, 13}, {5, 21}, {8, 25}, {9, 29}, {10, 37}};
+  for (const auto& [r2, count] : expected) {
+    EXPECT_EQ(Count(CircleSelection{{0, 0}, 0.01 * std::sqrt(r2)}, mesh, square), count)
+        << "r² = " << r2 << " cm²";
+    // Off the centre node: the same count around (3 cm, −2 cm).
+    EXPECT_EQ(Count(CircleSelection{{0.03, -0.02}, 0.01 * std::sqrt(r2)}, mesh, square), count);
+  }
+  // A circle that misses every node selects nothing.
+  EXPECT_EQ(Count(CircleSelection{{0.005, 0.005}, 0.002}, mesh, square), 0u);
 }
 
 TEST(NodeSelection, ToleranceWidensALine) {

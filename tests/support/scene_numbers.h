@@ -57,6 +57,10 @@ class SceneNumbers {
       Numbers(at + ".box.min", b->min);
       Numbers(at + ".box.max", b->max);
     }
+    if (const auto* c = std::get_if<CircleSelection>(&s.shape)) {
+      Numbers(at + ".circle.center", c->center);
+      Number(at + ".circle.radius", c->radius);
+    }
     Number(at + ".tolerance", s.tolerance);
   }
 

@@ -132,6 +132,43 @@ TEST_F(EditorUnits, APointTypedInAnyUnitIsStoredInSI) {
       << supports->message().toStdString();
 }
 
+// A drape tester's disc: every node within the typed radius of the typed
+// centre, stored in SI, listed in the shown unit, shown again when picked.
+TEST_F(EditorUnits, ACircleHoldsEveryNodeWithinItsRadius) {
+  MainWindow& w = *window_;
+  HoldsPanel* supports = w.supports();
+  supports->rule()->rule()->setCurrentText("circle");
+  supports->rule()->point()->setText("1 in, 0");
+  supports->rule()->radius()->setText("30 mm");
+  QPushButton* add = Button(supports, "Add support");
+  ASSERT_NE(add, nullptr);
+  add->click();
+  const auto& held = w.document()->scene().supports;
+  ASSERT_EQ(held.size(), 2u) << supports->message().toStdString();
+  const auto* disc = std::get_if<CircleSelection>(&held.back().select.shape);
+  ASSERT_NE(disc, nullptr);
+  EXPECT_NEAR(disc->center[0], 0.0254, 1e-12);
+  EXPECT_EQ(disc->center[1], 0.0);
+  EXPECT_NEAR(disc->radius, 0.03, 1e-12);
+  EXPECT_EQ(Row(supports->list(), 1),
+            held.back().name + ": circle (2.54 cm, 0), radius 3 cm, pinned");
+
+  // Picking another row and this one again shows the circle's rows.
+  supports->list()->setCurrentRow(0);
+  supports->list()->setCurrentRow(1);
+  EXPECT_EQ(supports->rule()->rule()->currentText().toStdString(), "circle");
+  EXPECT_EQ(supports->rule()->radius()->text().toStdString(), "3 cm");
+
+  // A radius that is no length, or not positive, is refused; nothing added.
+  for (const char* bad : {"2 gf", "0 cm", "-1 cm"}) {
+    supports->rule()->radius()->setText(bad);
+    add->click();
+    EXPECT_EQ(w.document()->scene().supports.size(), 2u) << bad;
+    EXPECT_NE(supports->message().toStdString().find("radius:"), std::string::npos)
+        << supports->message().toStdString();
+  }
+}
+
 // The probe 'corner' at (-10 cm, -10 cm) and one added by typing inches.
 TEST_F(EditorUnits, ProbesShowTheirPositionsInTheChosenSystem) {
   MainWindow& w = *window_;

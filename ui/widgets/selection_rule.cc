@@ -5,6 +5,8 @@
 #include <QLabel>
 #include <QLineEdit>
 
+#include <cmath>
+
 #include "core/model/overloaded.h"
 #include "core/model/units.h"
 #include "ui/widgets/typed_json.h"
@@ -25,6 +27,10 @@ QString DescribeSelection(const Selection& selection, UnitSystem system) {
             return QString("box (%1) to (%2)")
                 .arg(ListText(b.min, system), ListText(b.max, system));
           },
+          [&](const CircleSelection& c) {
+            return QString("circle (%1), radius %2")
+                .arg(ListText(c.center, system), QuantityText(c.radius, Measure::kLength, system));
+          },
           [](const CornersSelection&) { return QString("corners"); },
           [](const EdgeSelection& e) {
             const char* names[] = {
@@ -39,16 +45,22 @@ QString DescribeSelection(const Selection& selection, UnitSystem system) {
 SelectionRuleEditor::SelectionRuleEditor(QFormLayout* form, const QString& label, QWidget* parent)
     : QObject(parent) {
   rule_ = new QComboBox(parent);
-  rule_->addItems({"left", "right", "bottom", "top", "corners", "point", "picked"});
+  rule_->addItems({"left", "right", "bottom", "top", "corners", "point", "circle", "picked"});
   rule_->setToolTip(
-      "an edge, the corners, the node nearest a point, or the nodes picked in the "
-      "view (Pick nodes, then click the fabric)");
+      "an edge, the corners, the node nearest a point, every node within a radius of "
+      "a point (a drape tester's disc), or the nodes picked in the view (Pick nodes, "
+      "then click the fabric)");
   point_ = new QLineEdit("0, 0", parent);
   point_->setPlaceholderText("x, y (e.g. 5 cm, 0)");
-  point_->setToolTip("the point's reference x, y; units allowed (m, cm, in)");
+  point_->setToolTip(
+      "the point's reference x, y, or the circle's centre; units allowed (m, cm, in)");
+  radius_ = new QLineEdit("9 cm", parent);
+  radius_->setPlaceholderText("e.g. 9 cm");
+  radius_->setToolTip("the circle's radius: every node within it is selected; units allowed");
   picked_label_ = new QLabel("no nodes picked", parent);
   form->addRow(label, rule_);
   form->addRow("point", point_);
+  form->addRow("radius", radius_);
   form->addRow("picked", picked_label_);
 }
 
@@ -57,6 +69,11 @@ void SelectionRuleEditor::show(const Selection& selection) {
                  [&](const PointSelection& p) {
                    rule_->setCurrentText("point");
                    point_->setText(ListText(p.at, units_));
+                 },
+                 [&](const CircleSelection& c) {
+                   rule_->setCurrentText("circle");
+                   point_->setText(ListText(c.center, units_));
+                   radius_->setText(QuantityText(c.radius, Measure::kLength, units_));
                  },
                  [&](const CornersSelection&) { rule_->setCurrentText("corners"); },
                  [&](const EdgeSelection& e) {
@@ -73,6 +90,12 @@ void SelectionRuleEditor::setUnitSystem(UnitSystem system) {
     point_->setText(ListText(TypedPoint(point_->text()), units_));
   } catch (const UnitError&) {
     // Text that does not read stays as typed: Add says what is wrong.
+  }
+  try {
+    radius_->setText(
+        QuantityText(TypedMeasure(radius_->text(), Measure::kLength), Measure::kLength, units_));
+  } catch (const UnitError&) {
+    // As the point: Add says what is wrong.
   }
 }
 
@@ -96,7 +119,7 @@ std::optional<Selection> SelectionRuleEditor::picked(QString* problem) const {
 
 std::optional<Selection> SelectionRuleEditor::current(QString* problem) const {
   const QString rule = rule_->currentText();
-  if (rule != "point") return selection(rule, 0, 0, problem);
+  if (rule != "point" && rule != "circle") return selection(rule, 0, 0, problem);
   try {
     const Vec2 at = TypedPoint(point_->text());
     return selection(rule, at[0], at[1], problem);
@@ -112,6 +135,20 @@ std::optional<Selection> SelectionRuleEditor::selection(const QString& rule,
                                                         QString* problem) const {
   if (rule == "corners") return Selection{CornersSelection{}, std::nullopt};
   if (rule == "point") return Selection{PointSelection{{x, y}}, std::nullopt};
+  if (rule == "circle") {
+    double radius = 0;
+    try {
+      radius = TypedMeasure(radius_->text(), Measure::kLength);
+    } catch (const UnitError& e) {
+      if (problem) *problem = QString("radius: %1").arg(e.what());
+      return std::nullopt;
+    }
+    if (!(radius > 0) || !std::isfinite(radius)) {
+      if (problem) *problem = "radius: a circle's radius must be a length greater than zero";
+      return std::nullopt;
+    }
+    return Selection{CircleSelection{{x, y}, radius}, std::nullopt};
+  }
   if (rule == "picked") return picked(problem);
   const QStringList sides = {"left", "right", "bottom", "top"};
   if (!sides.contains(rule)) {

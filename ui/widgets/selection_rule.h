@@ -1,7 +1,7 @@
 // Which nodes something holds or loads, chosen as a user thinks of them:
-// an edge, the corners, the node nearest a point, or the nodes picked in
-// the viewport. One picked node becomes the point where it is (any mesh
-// density finds it); several are kept by their numbers (this mesh only).
+// an edge, the corners, the node nearest a point, every node within a
+// radius of a point, or the nodes picked in the viewport. One picked node becomes the point where
+// it is (any mesh density finds it); several are kept by their numbers (this mesh only).
 #pragma once
 
 #include <QWidget>
@@ -31,7 +31,8 @@ class SelectionRuleEditor : public QObject {
   SelectionRuleEditor(QFormLayout* form, const QString& label, QWidget* parent);
 
   // rule: "left", "right", "bottom", "top", "corners", "point" (at x, y
-  // [m]) or "picked". Empty with the reason in `problem` when the rule
+  // [m]), "circle" (centre x, y [m], the radius as the radius row says) or
+  // "picked". Empty with the reason in `problem` when the rule
   // cannot be made (nothing picked, an unknown rule).
   std::optional<Selection> selection(const QString& rule,
                                      double x,
@@ -44,7 +45,7 @@ class SelectionRuleEditor : public QObject {
   std::optional<Selection> picked(QString* problem) const;
 
   void setPicked(const std::vector<int>& nodes, const std::vector<std::array<double, 2>>& at);
-  // The rows show `selection` (an edge, the corners, a point; other shapes
+  // The rows show `selection` (an edge, the corners, a point, a circle; other shapes
   // leave them as they are).
   void show(const Selection& selection);
   // The point shown in `system`'s unit of length (typing takes any unit).
@@ -52,10 +53,12 @@ class SelectionRuleEditor : public QObject {
 
   QComboBox* rule() const { return rule_; }
   QLineEdit* point() const { return point_; }
+  QLineEdit* radius() const { return radius_; }
 
  private:
   QComboBox* rule_;
   QLineEdit* point_;
+  QLineEdit* radius_;
   UnitSystem units_ = UnitSystem::kSI;
   QLabel* picked_label_;
   std::vector<int> picked_;
