@@ -11,6 +11,8 @@ DRAPE_PACKAGES=(
   # engine
   libeigen3-dev libsuitesparse-dev libopenblas-pthread-dev libgmsh-dev libspectra-dev
   nlohmann-json3-dev libcli11-dev
+  # measurement: the shadow of a drape is a polygon union (Clipper)
+  libpolyclipping-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # rendering (ui/render): VTK through X; ffmpeg encodes MP4/GIF (and its
