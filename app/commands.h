@@ -28,6 +28,8 @@ void AddValidateCommand(CLI::App& app, CommandRunner& runner);
 void AddRunCommand(CLI::App& app, CommandRunner& runner);
 // Adds `drag SCENE --gripper NAME --by dx,dy,dz [--frames N] -o DIR`.
 void AddDragCommand(CLI::App& app, CommandRunner& runner);
+// Adds `measure RESULT --drape-coefficient [--support-radius R] [--step N] [--json]`.
+void AddMeasureCommand(CLI::App& app, CommandRunner& runner);
 // Adds `study STUDY -o DIR [--jobs N] [--emit slurm|parallel]` and `study DIR --collect`.
 void AddStudyCommand(CLI::App& app, CommandRunner& runner);
 // Adds `material fit FILE …` and `material list`.

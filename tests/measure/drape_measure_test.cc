@@ -12,6 +12,8 @@
 
 #include <Eigen/Geometry>
 
+#include "support/shadow_raster.h"
+
 namespace drape {
 namespace {
 
@@ -153,38 +155,6 @@ TEST(DrapeMeasure, FoldsThatLieOverOneAnotherCountOnce) {
   EXPECT_GT(layers, 1.2 * m.shadow_area);
 }
 
-// An independent area: the triangles rasterised on a 0.1 mm grid here,
-// every cell whose centre lies in some triangle counted once.
-double RasterArea(const Surface& s, double cell) {
-  const int n = static_cast<int>(std::ceil(2 * kSpecimen / cell));
-  std::vector<char> covered(static_cast<size_t>(n) * n, 0);
-  auto cover = [&](Eigen::Vector2d a, Eigen::Vector2d b, Eigen::Vector2d c) {
-    const double twice = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
-    if (twice == 0) return;
-    const Eigen::Vector2d lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
-    const int i0 = std::max(0, int((lo.x() + kSpecimen) / cell) - 1);
-    const int i1 = std::min(n - 1, int((hi.x() + kSpecimen) / cell) + 1);
-    const int j0 = std::max(0, int((lo.y() + kSpecimen) / cell) - 1);
-    const int j1 = std::min(n - 1, int((hi.y() + kSpecimen) / cell) + 1);
-    for (int i = i0; i <= i1; ++i)
-      for (int j = j0; j <= j1; ++j) {
-        const Eigen::Vector2d p((i + 0.5) * cell - kSpecimen, (j + 0.5) * cell - kSpecimen);
-        auto side = [&](Eigen::Vector2d u, Eigen::Vector2d v) {
-          return ((v - u).x() * (p - u).y() - (v - u).y() * (p - u).x()) * twice;
-        };
-        if (side(a, b) >= 0 && side(b, c) >= 0 && side(c, a) >= 0) covered[size_t(i) * n + j] = 1;
-      }
-  };
-  for (int e = 0; e < s.quads.rows(); ++e) {
-    auto xy = [&](int k) { return Eigen::Vector2d(s.positions.row(s.quads(e, k)).head<2>()); };
-    cover(xy(0), xy(1), xy(2));
-    cover(xy(0), xy(2), xy(3));
-  }
-  double count = 0;
-  for (char c : covered) count += c;
-  return count * cell * cell;
-}
-
 TEST(DrapeMeasure, TheShadowAgreesWithARasterOfTheTriangles) {
   // A skirt of 5 lobes whose hem also folds under (reach 0.3 … 0.9 … 0.5).
   auto place = [&](double rho, double phi) -> Eigen::Vector3d {
@@ -196,7 +166,8 @@ TEST(DrapeMeasure, TheShadowAgreesWithARasterOfTheTriangles) {
   };
   const Surface s = PolarSurface(24, 360, place);
   const DrapeMeasurement m = MeasureDrape(s.positions, s.quads, StandardTest());
-  EXPECT_NEAR(m.shadow_area / RasterArea(s, 1e-4), 1, 1e-3);
+  // Independently: the triangles rasterised on a 0.1 mm grid.
+  EXPECT_NEAR(m.shadow_area / test::RasterShadowArea(s.positions, s.quads, 1e-4), 1, 1e-3);
   EXPECT_EQ(m.nodes.size(), 5u);
 }
 
