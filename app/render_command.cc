@@ -24,6 +24,7 @@
 #ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
 #include "core/io/result_reader.h"
+#include "core/measure/drape_test_setup.h"
 #include "core/model/scene_error.h"
 #include "ui/render/animation.h"
 #include "ui/render/display.h"
@@ -46,6 +47,7 @@ struct ViewArgs {
   std::string units;  // empty: the scene's own
   std::vector<double> position, focal_point, view_up;
   bool edges = false, thickness = false, no_floor = false, no_paths = false, no_overlay = false;
+  bool shadow = false, no_shadow = false;
 
   void AddTo(CLI::App* cmd) {
     cmd->add_option("--size", size, "Image size WIDTHxHEIGHT in pixels")->capture_default_str();
@@ -78,6 +80,13 @@ struct ViewArgs {
     cmd->add_flag("--no-floor", no_floor, "No floor grid");
     cmd->add_flag("--no-paths", no_paths, "No gripper paths");
     cmd->add_flag("--no-overlay", no_overlay, "No text overlay");
+    cmd->add_flag("--shadow",
+                  shadow,
+                  "The drapemeter's view of a Cusick test (a gravity stage and a support that "
+                  "selects a circle): the shadow along gravity, the disc, the drape coefficient "
+                  "and nodes; on by default with --camera top for such a scene");
+    cmd->add_flag("--no-shadow", no_shadow, "No drapemeter's shadow, even with --camera top")
+        ->excludes("--shadow");
   }
 
 #ifdef DRAPE_WITH_RENDER
@@ -132,6 +141,16 @@ struct ViewArgs {
     o.paths = !no_paths;
     o.overlay = !no_overlay;
     return o;
+  }
+
+  // The drapemeter's view for a Cusick test: asked for, or seen from above.
+  void AddShadow(RenderOptions& o, const Scene& scene) const {
+    if (no_shadow || (!shadow && camera != "top")) return;
+    try {
+      o.drape_shadow = DrapeTestFor(scene, std::nullopt, std::nullopt);
+    } catch (const DrapeTestError& e) {
+      if (shadow) throw std::invalid_argument(std::string("--shadow: ") + e.what());
+    }
   }
 #endif
 };
@@ -264,8 +283,9 @@ int RunReactionPlot(const RenderArgs& args) {
 int RunRender(const RenderArgs& args) {
   return Guarded("render", [&] {
     if (args.plot == "reactions") return RunReactionPlot(args);
-    const RenderOptions options = args.view.Options(args.input);
+    RenderOptions options = args.view.Options(args.input);
     const RunInput run = ReadRunInput(args.input);
+    args.view.AddShadow(options, run.scene);
     const size_t i = StepIndex(run, args.step);
     FrameRenderer renderer(run.scene, run.model, options, RunBounds(run.scene, Pointers(run)));
     const Frame frame = FrameOf(run, i);
@@ -292,6 +312,7 @@ int RunAnimate(const AnimateArgs& args) {
     const RunInput run = ReadRunInput(args.input);
     if (!run.is_result)
       throw std::invalid_argument(args.input + ": a scene has one state; animate a result folder");
+    args.view.AddShadow(options.view, run.scene);
     const AnimationInput input{
         &run.scene, &run.model, Pointers(run), run.stage_names, run.lambdas, run.stages};
     g_interrupted = false;
@@ -396,7 +417,9 @@ void AddRenderCommands(CLI::App& app, CommandRunner& runner) {
                            "--thickness",
                            "--no-floor",
                            "--no-paths",
-                           "--no-overlay"})
+                           "--no-overlay",
+                           "--shadow",
+                           "--no-shadow"})
     plot->excludes(r->get_option(name));
   r->callback([render, &runner] { runner = [render] { return RunRender(*render); }; });
 

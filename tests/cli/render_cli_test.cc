@@ -133,6 +133,10 @@ TEST_F(RenderCli, BadArgumentsAreOneMessageAndExitOne) {
   r = RunDrape("render " + Fold() + " -o " + Out("x.png") + " --size 12x9000");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+  // The strip fold is no drape test: no support selects a disc.
+  r = RunDrape("render " + Fold() + " -o " + Out("x.png") + " --shadow");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--shadow: no support disc"), std::string::npos) << r.output;
   r = RunDrape("render '/no/such/result' -o " + Out("x.png"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("/no/such/result"), std::string::npos) << r.output;

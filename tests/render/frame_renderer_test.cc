@@ -15,6 +15,7 @@
 #include <filesystem>
 
 #include "core/io/scene_reader.h"
+#include "core/measure/drape_test_setup.h"
 #include "core/mechanics/director.h"
 #include "core/solve/shell_solver.h"
 #include "support/bent_strip.h"
@@ -399,6 +400,60 @@ TEST_F(FrameRendererTest, GhostIsTranslucentOverTheFabric) {
   renderer.Show(frame);
   const Image cleared{640, 480, renderer.CaptureRgb()};
   EXPECT_EQ(cleared.rgb, before.rgb);
+}
+
+// The drapemeter's view of a skirt hanging from an 18 cm disc as a cone
+// whose rim reaches 12 cm: from the top, the dark shadow covers the disc of
+// 12 cm and nothing beyond it, the disc's rim is drawn red, and the image's
+// dark area is π (12 cm)² at the picture's scale.
+TEST_F(FrameRendererTest, TheDrapemetersViewFillsTheShadowAndDrawsTheDisc) {
+  // The shipped Cusick test's specimen, disc and fabric; no probe labels.
+  Scene scene = ReadScene(test::ScenesDir() / "cusick-drape.json");
+  scene.probes.clear();
+  const ShellModel model = BuildShellModel(scene);
+  ShellState state = model.reference;
+  constexpr double kReach = 0.5, kRim = 0.09 + kReach * 0.06;
+  for (int i = 0; i < model.NodeCount(); ++i) {
+    const double x = state.positions(i, 0), y = state.positions(i, 1);
+    const double rho = std::hypot(x, y), s = std::max(0.0, rho - 0.09);
+    if (s == 0) continue;
+    const double r = 0.09 + kReach * s;
+    state.positions.row(i) << r * x / rho, r * y / rho, -s * std::sqrt(1 - kReach * kReach);
+  }
+  RenderOptions options = Bare(640, 480);
+  options.camera.view = "top";
+  options.drape_shadow = DrapeTestFor(scene, std::nullopt, std::nullopt);
+  FrameRenderer renderer(scene, model, options, RunBounds(scene, {&model.reference, &state}));
+  Frame frame;
+  frame.state = &state;
+  renderer.Show(frame);
+  const Image image{640, 480, renderer.CaptureRgb()};
+  renderer.WritePng(fs::temp_directory_path() / "drape-render-drapemeter.png");
+  const Eigen::Vector2d centre = Project(renderer, {0, 0, 0});
+  const double metre = (Project(renderer, {0.1, 0, 0}) - centre).norm() / 0.1;  // [px/m]
+  auto dark = [](const std::array<int, 3>& p) { return p[0] + p[1] + p[2] < 3 * 150; };
+  auto at = [&](double r, double angle) {
+    return image.At(static_cast<int>(centre.x() + metre * r * std::cos(angle)),
+                    static_cast<int>(centre.y() - metre * r * std::sin(angle)));
+  };
+  for (double angle = 0.1; angle < 6.2; angle += 0.5) {
+    EXPECT_TRUE(dark(at(0.05, angle))) << "inside the disc at " << angle;
+    EXPECT_TRUE(dark(at(0.105, angle))) << "between the disc's rim and the shadow's, " << angle;
+    EXPECT_FALSE(dark(at(0.135, angle))) << "beyond the shadow at " << angle;
+    bool red = false;  // the 2.5 px line, within a pixel of where the disc's rim projects
+    for (double dr = -1.5; dr <= 1.5; dr += 0.5) {
+      const auto p = at(0.09 + dr / metre, angle);
+      red |= p[0] > p[1] + 60;
+    }
+    EXPECT_TRUE(red) << "the disc's rim is red at " << angle;
+  }
+  int dark_pixels = 0;  // inside the specimen's grey rim (at 15 cm), which is dark too
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (std::hypot(x + 0.5 - centre.x(), y + 0.5 - centre.y()) < 0.14 * metre)
+        dark_pixels += dark(image.At(x, y));
+  const double expected = M_PI * std::pow(kRim * metre, 2);
+  EXPECT_NEAR(dark_pixels / expected, 1, 0.01) << dark_pixels << " px against " << expected;
 }
 
 }  // namespace

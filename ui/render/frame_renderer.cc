@@ -34,6 +34,7 @@
 #include <stdexcept>
 
 #include "ui/render/colour_map.h"
+#include "ui/render/drape_shadow_actors.h"
 #include "ui/render/field_units.h"
 #include "ui/render/ghost_surface.h"
 #include "ui/render/scene_actors.h"
@@ -49,6 +50,7 @@ using Ptr = vtkSmartPointer<T>;
 constexpr double kFront[3] = {0.93, 0.62, 0.33};
 constexpr double kBack[3] = {0.47, 0.36, 0.62};
 constexpr double kBackground[3] = {0.96, 0.97, 0.98};
+constexpr double kFabricOverShadowOpacity = 0.3;
 constexpr double kObstacle[3] = {0.62, 0.66, 0.70};
 constexpr double kSupport[3] = {0.25, 0.25, 0.28};
 constexpr double kGripper[3] = {0.85, 0.15, 0.15};
@@ -130,7 +132,8 @@ struct FrameRenderer::Impl {
   std::vector<int> support_nodes;
   std::vector<Ptr<vtkCaptionActor2D>> probe_labels;
   Ptr<vtkTextActor> overlay = Ptr<vtkTextActor>::New();
-  Ptr<vtkActor> ghost = MakeGhostActor();  // hidden until SetGhost
+  Ptr<vtkActor> ghost = MakeGhostActor();     // hidden until SetGhost
+  std::unique_ptr<DrapeShadowActors> shadow;  // the drapemeter's view only
 
   Impl(const Scene& s,
        const ShellModel& m,
@@ -165,6 +168,8 @@ struct FrameRenderer::Impl {
     AddProbes();
     if (options.floor && !HasPlane()) AddFloor();
     AddOverlay();
+    if (options.drape_shadow)
+      shadow = std::make_unique<DrapeShadowActors>(renderer, *options.drape_shadow, bounds);
     renderer->AddActor(ghost);
     PlaceCamera();
   }
@@ -195,6 +200,9 @@ struct FrameRenderer::Impl {
         actor->GetProperty()->EdgeVisibilityOn();
         actor->GetProperty()->SetEdgeColor(0.2, 0.2, 0.2);
       }
+      // The shadow under the part shows through it, as the lamp's through
+      // the specimen.
+      if (options.drape_shadow) actor->GetProperty()->SetOpacity(kFabricOverShadowOpacity);
       auto back = Ptr<vtkProperty>::New();
       back->DeepCopy(actor->GetProperty());
       back->SetColor(kBack[0], kBack[1], kBack[2]);
@@ -252,7 +260,8 @@ struct FrameRenderer::Impl {
     grippers = std::make_unique<Glyphs>(1.6 * radius, kGripper);
     for (const auto& s : model.supports)
       support_nodes.insert(support_nodes.end(), s.nodes.begin(), s.nodes.end());
-    renderer->AddActor(supports->actor);
+    // In the drapemeter's view the disc's rim stands for the nodes it clamps.
+    if (!options.drape_shadow) renderer->AddActor(supports->actor);
     renderer->AddActor(grippers->actor);
   }
 
@@ -374,6 +383,9 @@ struct FrameRenderer::Impl {
     camera->SetFocalPoint(centre.data());
     camera->SetPosition(position.data());
     camera->SetViewUp(up.data());
+    // The drapemeter's shadow is a parallel projection: seen so, the
+    // fabric's rim lies on the shadow's, at any height.
+    camera->SetParallelProjection(options.drape_shadow && options.camera.view == "top");
     double b[6] = {bounds.min().x(),
                    bounds.max().x(),
                    bounds.min().y(),
@@ -480,7 +492,19 @@ struct FrameRenderer::Impl {
                     frame.stage_name.c_str(),
                     frame.step,
                     frame.lambda);
-    overlay->SetInput(text);
+    std::string shown = text;
+    if (shadow) {
+      const DrapeMeasurement m = shadow->Place(model.mesh, state);
+      char drape[128];
+      std::snprintf(drape,
+                    sizeof drape,
+                    "\ndrape coefficient %.3f   %zu %s",
+                    m.drape_coefficient,
+                    m.nodes.size(),
+                    m.nodes.size() == 1 ? "node" : "nodes");
+      shown += drape;
+    }
+    overlay->SetInput(shown.c_str());
     renderer->ResetCameraClippingRange();
   }
 };

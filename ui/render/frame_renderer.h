@@ -24,6 +24,7 @@
 #include "core/fe/element_fields.h"
 #include "core/fe/shell_model.h"
 #include "core/fe/shell_state.h"
+#include "core/measure/drape_coefficient.h"
 #include "core/model/scene.h"
 #include "core/model/unit_system.h"
 
@@ -57,6 +58,12 @@ struct RenderOptions {
   bool floor = true;       // a grid under the part (unless a plane obstacle is there)
   bool paths = true;       // gripper paths as polylines with an arrow
   bool overlay = true;     // scene name, stage, step, λ
+  // The drapemeter's view (a Cusick test, docs/cusick.md): the state's
+  // shadow along gravity filled under the part, the disc's and the flat
+  // specimen's rims, the fabric translucent over them, a parallel
+  // projection seen from above, and the drape coefficient and node count
+  // in the overlay.
+  std::optional<DrapeTestOptions> drape_shadow;
   CameraSpec camera;
 };
 
