@@ -95,7 +95,7 @@ int RunMeasure(const MeasureArgs& args) {
     if (!args.support_radius.empty()) radius = ParseLength("--support-radius", args.support_radius);
     std::optional<Vec2> centre;
     if (!args.center.empty()) centre = ParsePoint("--center", args.center);
-    const DrapeTestOptions options = DrapeTestFor(run.scene, radius, centre);
+    const DrapeTestOptions options = DrapeTestFor(run.scene, run.model.mesh, radius, centre);
     const DrapeMeasurement m = MeasureDrape(run.states[i].positions, run.model.mesh.quads, options);
     if (!args.profile.empty()) WriteProfile(args.profile, m.profile);
     if (args.json)

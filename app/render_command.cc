@@ -144,10 +144,10 @@ struct ViewArgs {
   }
 
   // The drapemeter's view for a Cusick test: asked for, or seen from above.
-  void AddShadow(RenderOptions& o, const Scene& scene) const {
+  void AddShadow(RenderOptions& o, const Scene& scene, const Mesh& mesh) const {
     if (no_shadow || (!shadow && camera != "top")) return;
     try {
-      o.drape_shadow = DrapeTestFor(scene, std::nullopt, std::nullopt);
+      o.drape_shadow = DrapeTestFor(scene, mesh, std::nullopt, std::nullopt);
     } catch (const DrapeTestError& e) {
       if (shadow) throw std::invalid_argument(std::string("--shadow: ") + e.what());
     }
@@ -285,7 +285,7 @@ int RunRender(const RenderArgs& args) {
     if (args.plot == "reactions") return RunReactionPlot(args);
     RenderOptions options = args.view.Options(args.input);
     const RunInput run = ReadRunInput(args.input);
-    args.view.AddShadow(options, run.scene);
+    args.view.AddShadow(options, run.scene, run.model.mesh);
     const size_t i = StepIndex(run, args.step);
     FrameRenderer renderer(run.scene, run.model, options, RunBounds(run.scene, Pointers(run)));
     const Frame frame = FrameOf(run, i);
@@ -312,7 +312,7 @@ int RunAnimate(const AnimateArgs& args) {
     const RunInput run = ReadRunInput(args.input);
     if (!run.is_result)
       throw std::invalid_argument(args.input + ": a scene has one state; animate a result folder");
-    args.view.AddShadow(options.view, run.scene);
+    args.view.AddShadow(options.view, run.scene, run.model.mesh);
     const AnimationInput input{
         &run.scene, &run.model, Pointers(run), run.stage_names, run.lambdas, run.stages};
     g_interrupted = false;

@@ -22,9 +22,25 @@ const CircleSelection* SupportDisc(const Scene& scene) {
   return nullptr;
 }
 
+// The reference mesh's area in x, y: its quads' shoelace areas.
+double FlatArea(const Mesh& mesh) {
+  double area = 0;
+  for (int e = 0; e < mesh.ElementCount(); ++e) {
+    double twice = 0;
+    for (int k = 0; k < 4; ++k) {
+      const int a = mesh.quads(e, k), b = mesh.quads(e, (k + 1) % 4);
+      twice +=
+          mesh.positions(a, 0) * mesh.positions(b, 1) - mesh.positions(b, 0) * mesh.positions(a, 1);
+    }
+    area += 0.5 * std::abs(twice);
+  }
+  return area;
+}
+
 }  // namespace
 
 DrapeTestOptions DrapeTestFor(const Scene& scene,
+                              const Mesh& mesh,
                               std::optional<double> support_radius,
                               std::optional<Vec2> centre) {
   if (std::none_of(scene.stages.begin(), scene.stages.end(), [](const Stage& s) {
@@ -57,7 +73,7 @@ DrapeTestOptions DrapeTestFor(const Scene& scene,
     throw DrapeTestError("the support disc (radius " + Cm(o.disc_radius) + " about (" + Cm(c[0]) +
                          ", " + Cm(c[1]) + ")) reaches " + Cm(outside) +
                          " outside the part: it must lie inside the specimen");
-  o.specimen_area = OutlineArea(scene.fabric.outline);
+  o.specimen_area = FlatArea(mesh);
   o.down = Eigen::Vector3d(
       scene.gravity_direction[0], scene.gravity_direction[1], scene.gravity_direction[2]);
   o.centre = Eigen::Vector3d(c[0], c[1], scene.fabric.elevation);

@@ -422,7 +422,7 @@ TEST_F(FrameRendererTest, TheDrapemetersViewFillsTheShadowAndDrawsTheDisc) {
   }
   RenderOptions options = Bare(640, 480);
   options.camera.view = "top";
-  options.drape_shadow = DrapeTestFor(scene, std::nullopt, std::nullopt);
+  options.drape_shadow = DrapeTestFor(scene, model.mesh, std::nullopt, std::nullopt);
   FrameRenderer renderer(scene, model, options, RunBounds(scene, {&model.reference, &state}));
   Frame frame;
   frame.state = &state;

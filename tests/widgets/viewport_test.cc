@@ -31,6 +31,7 @@
 #include <QUndoStack>
 
 #include "core/io/scene_reader.h"
+#include "core/measure/drape_test_setup.h"
 #include "core/solve/shell_solver.h"
 #include "support/strip_scene.h"
 #include "support/test_paths.h"
@@ -43,6 +44,7 @@
 #include "ui/widgets/run_plot.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/stages_panel.h"
+#include "ui/widgets/view_controller.h"
 #include "ui/widgets/vtk_viewport.h"
 #include "widgets/gui_test.h"
 
@@ -144,6 +146,56 @@ TEST_F(Widgets, WorkbenchShowsEveryStepOfARunInOrder) {
   }
   EXPECT_GT(expected, 2000);
   EXPECT_NEAR(fabric, expected, 0.01 * expected);
+}
+
+// The Cusick test in the workbench: every step shown says its drape
+// coefficient and node count under the view, as `drape measure` computes
+// them for that state; the shadow is drawn under the part; a scene that is
+// no drape test shows no such label.
+TEST_F(Widgets, TheCusickTestShowsItsDrapeCoefficientForTheStepShown) {
+  MainWindow window;
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  const auto file = test::ScenesDir() / "cusick-drape.json";
+  ASSERT_TRUE(window.openScene(QString::fromStdString(file.string())));
+  ViewController* view = window.view();
+  EXPECT_TRUE(view->drapeLabel()->isVisibleTo(&window));
+  EXPECT_EQ(view->drapeLabel()->text().toStdString(), "drape coefficient 1.000 · 0 nodes");
+  QSignalSpy finished(&window, &MainWindow::runFinished);
+  window.run();
+  ASSERT_TRUE(finished.wait(60000));
+  ASSERT_GT(window.stepCount(), 1);
+  const Scene scene = ReadScene(file);
+  for (int shown : {1, window.stepCount()}) {
+    view->timeline()->setValue(shown);
+    const DrapeMeasurement m =
+        MeasureDrape(view->step(shown).state.positions,
+                     view->model()->mesh.quads,
+                     DrapeTestFor(scene, view->model()->mesh, std::nullopt, std::nullopt));
+    char expected[96];
+    std::snprintf(expected,
+                  sizeof expected,
+                  "drape coefficient %.3f · %zu %s",
+                  m.drape_coefficient,
+                  m.nodes.size(),
+                  m.nodes.size() == 1 ? "node" : "nodes");
+    EXPECT_EQ(view->drapeLabel()->text().toStdString(), expected) << "step " << shown;
+  }
+  EXPECT_LT(std::stod(view->drapeLabel()->text().mid(18, 5).toStdString()), 0.95);
+  // The shadow: dark slate pixels under the part in the default view.
+  QTest::qWait(100);
+  const QImage shown = window.viewport()->grabFramebuffer();
+  int slate = 0;
+  for (int y = 0; y < shown.height(); ++y)
+    for (int x = 0; x < shown.width(); ++x) {
+      const QRgb p = shown.pixel(x, y);
+      slate += qBlue(p) > qRed(p) + 15 && qRed(p) < 90;
+    }
+  EXPECT_GT(slate, 500) << "of " << shown.width() * shown.height() << " pixels";
+
+  ASSERT_TRUE(window.openScene(
+      QString::fromStdString((test::ScenesDir() / "strip-convergence-20.json").string())));
+  EXPECT_FALSE(window.view()->drapeLabel()->isVisibleTo(&window));
 }
 
 // "ffprobe" of a movie: "width,height,frames".

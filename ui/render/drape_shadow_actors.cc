@@ -1,5 +1,7 @@
 #include "ui/render/drape_shadow_actors.h"
 
+#include "core/measure/drape_test_setup.h"
+
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkContourTriangulator.h>
@@ -63,6 +65,14 @@ Ptr<vtkActor> RimActor(const std::vector<Eigen::Vector3d>& ring,
 
 }  // namespace
 
+std::optional<DrapeTestOptions> DrapemeterTestOf(const Scene& scene, const Mesh& mesh) {
+  try {
+    return DrapeTestFor(scene, mesh, std::nullopt, std::nullopt);
+  } catch (const DrapeTestError&) {
+    return std::nullopt;
+  }
+}
+
 std::vector<Eigen::Vector3d> DrapeShadowActors::Rim(double radius, double depth) const {
   std::vector<Eigen::Vector3d> ring;
   for (int k = 0; k < kRimPoints; ++k) {
@@ -82,7 +92,11 @@ DrapeShadowActors::DrapeShadowActors(vtkRenderer* renderer,
     lowest = std::max(
         lowest,
         (bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)) - test.centre).dot(down));
-  shadow_depth_ = lowest + 0.01 * bounds.diagonal().norm();
+  // Nothing held by the disc hangs lower than the specimen's reach beyond
+  // it: the plane stays under every state when `bounds` holds only the
+  // flat reference (the workbench, before a run).
+  const double hanging = std::sqrt(test.specimen_area / M_PI) - test.disc_radius;
+  shadow_depth_ = std::max(lowest, hanging) + 0.01 * bounds.diagonal().norm();
 
   // The rims, just above the disc (over the fabric seen from above).
   const double specimen_radius = std::sqrt(test.specimen_area / M_PI);

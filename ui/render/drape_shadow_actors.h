@@ -8,16 +8,22 @@
 #include <vtkSmartPointer.h>
 #include <Eigen/Geometry>
 
+#include <optional>
 #include <vector>
 
 #include "core/fe/shell_state.h"
 #include "core/measure/drape_coefficient.h"
 #include "core/model/mesh.h"
+#include "core/model/scene.h"
 
 class vtkActor;
 class vtkRenderer;
 
 namespace drape {
+
+// The test a scene meshed as `mesh` is, when it is one (a gravity stage and
+// a support that selects a circle, docs/cusick.md); nullopt for any other.
+std::optional<DrapeTestOptions> DrapemeterTestOf(const Scene& scene, const Mesh& mesh);
 
 class DrapeShadowActors {
  public:

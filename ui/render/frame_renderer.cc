@@ -134,6 +134,7 @@ struct FrameRenderer::Impl {
   Ptr<vtkTextActor> overlay = Ptr<vtkTextActor>::New();
   Ptr<vtkActor> ghost = MakeGhostActor();     // hidden until SetGhost
   std::unique_ptr<DrapeShadowActors> shadow;  // the drapemeter's view only
+  std::optional<DrapeMeasurement> drape;      // of the state last shown, in that view
 
   Impl(const Scene& s,
        const ShellModel& m,
@@ -202,7 +203,8 @@ struct FrameRenderer::Impl {
       }
       // The shadow under the part shows through it, as the lamp's through
       // the specimen.
-      if (options.drape_shadow) actor->GetProperty()->SetOpacity(kFabricOverShadowOpacity);
+      if (options.drape_shadow && options.camera.view == "top")
+        actor->GetProperty()->SetOpacity(kFabricOverShadowOpacity);
       auto back = Ptr<vtkProperty>::New();
       back->DeepCopy(actor->GetProperty());
       back->SetColor(kBack[0], kBack[1], kBack[2]);
@@ -494,7 +496,7 @@ struct FrameRenderer::Impl {
                     frame.lambda);
     std::string shown = text;
     if (shadow) {
-      const DrapeMeasurement m = shadow->Place(model.mesh, state);
+      const DrapeMeasurement& m = *(drape = shadow->Place(model.mesh, state));
       char drape[128];
       std::snprintf(drape,
                     sizeof drape,
@@ -568,6 +570,10 @@ void FrameRenderer::ClearGhost() {
 }
 bool FrameRenderer::HasGhost() const {
   return impl_->ghost->GetVisibility();
+}
+
+const std::optional<DrapeMeasurement>& FrameRenderer::drape() const {
+  return impl_->drape;
 }
 
 vtkRenderer* FrameRenderer::renderer() {

@@ -60,9 +60,9 @@ struct RenderOptions {
   bool overlay = true;     // scene name, stage, step, λ
   // The drapemeter's view (a Cusick test, docs/cusick.md): the state's
   // shadow along gravity filled under the part, the disc's and the flat
-  // specimen's rims, the fabric translucent over them, a parallel
-  // projection seen from above, and the drape coefficient and node count
-  // in the overlay.
+  // specimen's rims, and the drape coefficient and node count in the
+  // overlay. Seen from the top: the fabric translucent over the shadow, in
+  // a parallel projection.
   std::optional<DrapeTestOptions> drape_shadow;
   CameraSpec camera;
 };
@@ -113,6 +113,9 @@ class FrameRenderer {
 
   int width() const;
   int height() const;
+  // In the drapemeter's view (options.drape_shadow), the drape coefficient,
+  // nodes and shadow of the state last shown; empty otherwise.
+  const std::optional<DrapeMeasurement>& drape() const;
   vtkRenderer* renderer();
   // The camera placed again as at the start, fitted to the window's present
   // shape (after the window was resized, or the user turned the view).

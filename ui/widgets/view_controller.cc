@@ -10,7 +10,10 @@
 #include <QToolButton>
 
 #include <algorithm>
+#include <cmath>
 
+#include "ui/render/drape_shadow_actors.h"
+#include "ui/widgets/typed_json.h"
 #include "ui/widgets/vtk_viewport.h"
 
 namespace drape {
@@ -43,6 +46,8 @@ ViewController::ViewController(VtkViewport* viewport, QWidget* bar_parent, QObje
   timeline_->setRange(0, 0);
   step_label_ = new QLabel("no scene", bar_);
   step_label_->setMinimumWidth(260);
+  drape_label_ = new QLabel(bar_);
+  drape_label_->setVisible(false);
   field_ = new QComboBox(bar_);
   field_->addItem("fabric colours", "");
   for (const auto& f : Fields()) field_->addItem(f.title, f.name);
@@ -58,6 +63,7 @@ ViewController::ViewController(VtkViewport* viewport, QWidget* bar_parent, QObje
   row->addWidget(play_button);
   row->addWidget(timeline_, 1);
   row->addWidget(step_label_);
+  row->addWidget(drape_label_);
   row->addWidget(field_);
   row->addWidget(colour_map_);
   player_ = new QTimer(this);
@@ -124,7 +130,7 @@ void ViewController::RebuildRenderer() {
   for (const auto& p : GripperPathPoints(scene_, *model_)) bounds.extend(p);
   viewport_->makeCurrent();
   renderer_ = std::make_unique<FrameRenderer>(
-      scene_, *model_, view_, bounds, std::nullopt, viewport_->renderWindow());
+      scene_, *model_, look(), bounds, std::nullopt, viewport_->renderWindow());
   viewport_->doneCurrent();
   camera_touched_ = false;
   drawn_generation_ = -1;
@@ -229,6 +235,8 @@ RenderOptions ViewController::look() const {
   RenderOptions look = view_;
   look.width = viewport_->width();
   look.height = viewport_->height();
+  // A Cusick test shows its shadow and drape coefficient, as `drape render` does.
+  if (model_) look.drape_shadow = DrapemeterTestOf(scene_, model_->mesh);
   return look;
 }
 
@@ -278,7 +286,39 @@ void ViewController::showStep(int index) {
     emit message(QString::fromStdString(e.what()));
     return;
   }
+  ShowDrape();
   viewport_->requestRender();
+}
+
+namespace {
+// An area as a drape tester quotes it: cm², or in² for imperial units.
+QString AreaText(double m2, UnitSystem units) {
+  if (units == UnitSystem::kImperial)
+    return QString("%1 in²").arg(m2 / (0.0254 * 0.0254), 0, 'f', 2);
+  return QString("%1 cm²").arg(m2 * 1e4, 0, 'f', 1);
+}
+}  // namespace
+
+void ViewController::ShowDrape() {
+  const auto& m = renderer_->drape();
+  drape_label_->setVisible(m.has_value());
+  if (!m) return;
+  drape_label_->setText(QString("drape coefficient %1 · %2 %3")
+                            .arg(m->drape_coefficient, 0, 'f', 3)
+                            .arg(m->nodes.size())
+                            .arg(m->nodes.size() == 1 ? "node" : "nodes"));
+  QStringList nodes;
+  for (const DrapeNode& n : m->nodes)
+    nodes << QString("%1° (%2)")
+                 .arg(n.angle * 180 / M_PI, 0, 'f', 1)
+                 .arg(QuantityText(n.amplitude, Measure::kLength, view_.units));
+  drape_label_->setToolTip(
+      QString("The Cusick drape test of the step shown: shadow %1, disc %2, specimen %3.\n"
+              "Nodes (angle from x, amplitude): %4")
+          .arg(AreaText(m->shadow_area, view_.units),
+               AreaText(m->disc_area, view_.units),
+               AreaText(m->specimen_area, view_.units),
+               nodes.isEmpty() ? "none" : nodes.join(", ")));
 }
 
 void ViewController::play() {

@@ -40,6 +40,9 @@ class ViewController : public QObject {
   QWidget* bar() const { return bar_; }
   QSlider* timeline() const { return timeline_; }
   QLabel* stepLabel() const { return step_label_; }
+  // A Cusick test's drape coefficient and node count for the step shown
+  // (hidden for other scenes).
+  QLabel* drapeLabel() const { return drape_label_; }
 
   // A scene and its model to show from the reference state: the steps of
   // an earlier run go, and a renderer is made for them. With `keep_result`
@@ -101,6 +104,8 @@ class ViewController : public QObject {
 
  private:
   void RebuildRenderer();
+  // The drape label for the step just shown (ShowStep).
+  void ShowDrape();
   void Redraw();
   void DrawGhost();
 
@@ -119,6 +124,7 @@ class ViewController : public QObject {
   QWidget* bar_ = nullptr;
   QSlider* timeline_ = nullptr;
   QLabel* step_label_ = nullptr;
+  QLabel* drape_label_ = nullptr;
   QComboBox* field_ = nullptr;
   QComboBox* colour_map_ = nullptr;
   QTimer* player_ = nullptr;
