@@ -298,6 +298,24 @@ bool RunPending(const Study& study, const fs::path& dir, int jobs, bool quiet) {
   return !g_interrupted;
 }
 
+// "drape coefficient 0.905 ± 0.004, nodes 4.0 ± 0.0 (4 to 4), 3 specimens".
+std::string DrapeSpreadText(const DrapeSpread& s) {
+  char text[192];
+  std::snprintf(text,
+                sizeof text,
+                "drape coefficient %.3f ± %.3f, nodes %.1f ± %.1f (%d to %d), %d %s (mean ± "
+                "standard deviation)",
+                s.mean_coefficient,
+                s.sd_coefficient,
+                s.mean_nodes,
+                s.sd_nodes,
+                s.fewest_nodes,
+                s.most_nodes,
+                s.specimens,
+                s.specimens == 1 ? "specimen" : "specimens");
+  return text;
+}
+
 // Draws DIR/front.png with `drape front` (a program with VTK); returns the
 // line that says where it is, or why it is not.
 std::string DrawFront(const Study& study, const fs::path& dir) {
@@ -371,6 +389,10 @@ int RunStudy(const StudyArgs& args) {
               << " runs:";
     for (const auto& [status, n] : counts) std::cerr << " " << n << " " << status;
     std::cerr << "\n  table: " << (dir / "study.csv").string() << "\n  " << front << "\n";
+    // The specimens of a Cusick test, as a lab reports them (the reference aside).
+    const std::vector<StudyRow> specimens(rows.begin(), rows.end() - (study.reference ? 1 : 0));
+    if (const auto spread = SpreadOfDrape(specimens))
+      std::cerr << "  " << DrapeSpreadText(*spread) << "\n";
   }
   return complete ? 0 : 130;
 }

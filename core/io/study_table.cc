@@ -2,12 +2,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
+#include "core/io/scene_reader.h"
 #include "core/io/state_file.h"
+#include "core/measure/drape_test_setup.h"
 #include "core/model/mesh_transfer.h"
 
 namespace drape {
@@ -49,6 +52,19 @@ std::optional<FinalShape> ReadFinalShape(const fs::path& folder) {
   }
 }
 
+// The Cusick test's numbers of the last step, when the run is one.
+void MeasureDrapeOf(StudyRow& row, const json& result, const FinalShape& shape) {
+  try {
+    const Scene scene = SceneFromJson(result.at("scene_resolved"));
+    const DrapeTestOptions test = DrapeTestFor(scene, shape.mesh, std::nullopt, std::nullopt);
+    const DrapeMeasurement m = MeasureDrape(shape.positions, shape.mesh.quads, test);
+    row.drape_coefficient = m.drape_coefficient;
+    row.drape_nodes = static_cast<int>(m.nodes.size());
+  } catch (const std::exception&) {
+    // Not a drape test (or a result that does not read): no such columns.
+  }
+}
+
 StudyRow ReadRow(const fs::path& study_dir, const StudyRun& run) {
   StudyRow row;
   row.run = run;
@@ -72,6 +88,9 @@ StudyRow ReadRow(const fs::path& study_dir, const StudyRun& run) {
       if (p.is_array() && p.size() == 3)
         row.probes.push_back(
             {name, {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()}, std::nullopt});
+  if (row.status == "converged" && r.contains("scene_resolved"))
+    if (const auto shape = ReadFinalShape(RunResultFolder(study_dir, run.name)))
+      MeasureDrapeOf(row, r, *shape);
   return row;
 }
 
@@ -167,12 +186,45 @@ std::vector<bool> ParetoFront(const std::vector<StudyRow>& rows) {
   return front;
 }
 
+std::optional<DrapeSpread> SpreadOfDrape(const std::vector<StudyRow>& rows) {
+  std::vector<double> dc, nodes;
+  for (const StudyRow& row : rows)
+    if (row.drape_coefficient && row.drape_nodes) {
+      dc.push_back(*row.drape_coefficient);
+      nodes.push_back(*row.drape_nodes);
+    }
+  if (dc.empty()) return std::nullopt;
+  auto mean = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x;
+    return s / v.size();
+  };
+  auto sd = [](const std::vector<double>& v, double m) {
+    if (v.size() < 2) return 0.0;
+    double s = 0;
+    for (double x : v) s += (x - m) * (x - m);
+    return std::sqrt(s / (v.size() - 1));
+  };
+  DrapeSpread out;
+  out.specimens = static_cast<int>(dc.size());
+  out.mean_coefficient = mean(dc);
+  out.sd_coefficient = sd(dc, out.mean_coefficient);
+  out.mean_nodes = mean(nodes);
+  out.sd_nodes = sd(nodes, out.mean_nodes);
+  out.fewest_nodes = static_cast<int>(*std::min_element(nodes.begin(), nodes.end()));
+  out.most_nodes = static_cast<int>(*std::max_element(nodes.begin(), nodes.end()));
+  return out;
+}
+
 void WriteStudyCsv(const Study& study, const std::vector<StudyRow>& rows, const fs::path& file) {
   // Probe columns: every probe any run reports, in order of first appearance.
   std::vector<std::string> probes;
   for (const StudyRow& row : rows)
     for (const StudyProbe& p : row.probes)
       if (std::find(probes.begin(), probes.end(), p.name) == probes.end()) probes.push_back(p.name);
+
+  const bool drape = std::any_of(
+      rows.begin(), rows.end(), [](const StudyRow& r) { return r.drape_coefficient.has_value(); });
 
   const fs::path temporary = file.string() + ".part";
   {
@@ -182,7 +234,9 @@ void WriteStudyCsv(const Study& study, const std::vector<StudyRow>& rows, const 
     out << ",status,wall_s,steps,iterations,factorizations,peak_memory_bytes";
     for (const std::string& p : probes)
       out << "," << p << "_x_m," << p << "_y_m," << p << "_z_m," << p << "_error_m";
-    out << ",max_node_error_m,estimated_error_m\n";
+    out << ",max_node_error_m,estimated_error_m";
+    if (drape) out << ",drape_coefficient,drape_nodes";
+    out << "\n";
     for (const StudyRow& row : rows) {
       out << row.run.name;
       for (const std::string& key : study.keys) {
@@ -202,7 +256,9 @@ void WriteStudyCsv(const Study& study, const std::vector<StudyRow>& rows, const 
           out << "," << (found ? Cell(std::optional<double>(found->position[c])) : "");
         out << "," << (found ? Cell(found->error) : "");
       }
-      out << "," << Cell(row.max_node_error) << "," << Cell(row.estimated_error) << "\n";
+      out << "," << Cell(row.max_node_error) << "," << Cell(row.estimated_error);
+      if (drape) out << "," << Cell(row.drape_coefficient) << "," << Cell(row.drape_nodes);
+      out << "\n";
     }
     if (!out) throw std::runtime_error("cannot write '" + temporary.string() + "'");
   }

@@ -42,7 +42,22 @@ struct StudyRow {
   std::optional<double> max_node_error;
   // The run's own estimate (solver.error_estimate): its largest probe error.
   std::optional<double> estimated_error;
+  // A Cusick test's (docs/cusick.md) drape coefficient and node count at
+  // the last step of a converged run; empty for any other scene.
+  std::optional<double> drape_coefficient;
+  std::optional<int> drape_nodes;
 };
+
+// The mean and sample standard deviation of the drape coefficient and of
+// the node count over the runs that have them, as a lab reports its
+// specimens; empty when fewer than one run has them.
+struct DrapeSpread {
+  int specimens = 0;
+  double mean_coefficient = 0, sd_coefficient = 0;
+  double mean_nodes = 0, sd_nodes = 0;
+  int fewest_nodes = 0, most_nodes = 0;
+};
+std::optional<DrapeSpread> SpreadOfDrape(const std::vector<StudyRow>& rows);
 
 // Reads every run's result (and the reference's); a run without one is a
 // row with status `missing`. Errors are measured only against a reference
