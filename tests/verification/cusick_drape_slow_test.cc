@@ -1,0 +1,101 @@
+// The Cusick drape test (docs/cusick.md) over a family of fabrics: a 30 cm
+// specimen on 18 cm discs, h = 0.5 mm, E = 10 MPa, ν = 0.3, w = 2 N/m²,
+// bending rigidity B = w c³ for a bending length c, a 0.5 mm smooth
+// unevenness (seed 1). What the textile literature reports of every
+// drapemeter (Cusick 1968; the standards' own tables): the drape
+// coefficient rises with the bending length, and the nodes do not grow in
+// number. And the coefficient of a stiff fabric does not depend on the
+// mesh: two meshes within 0.02.
+//
+// Measured on 2 cores (1 thread), the drape coefficient and nodes:
+//   c = 1.5 cm: 0.672, 4 (10.9 s);  2.5 cm: 0.839, 4 (2.3 s);  4 cm: 0.960, 4 (1.2 s);
+//   4 cm on a 0.75 cm mesh: 0.970, 5 (2.5 s).
+// Not asserted, because it does not hold yet (issue 36's notes):
+//   c = 2.5 cm on 1.25, 1 and 0.75 cm meshes: 0.796 (3 nodes), 0.839 (4), 0.890 (6);
+//   1.5 cm on 0.75 cm stops at λ = 0.027;
+//   B and w both × 4 at c = 2.5 cm: 0.777 against 0.839.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "core/fe/shell_model.h"
+#include "core/measure/drape_test_setup.h"
+#include "core/solve/shell_solver.h"
+
+namespace drape {
+namespace {
+
+constexpr double kWeight = 2.0;  // [N/m²]
+
+Scene Cusick(double bending_length, double mesh_size) {
+  Scene scene;
+  scene.name = "Cusick test";
+  scene.fabric.outline = DiskOutline{0.15, {0.0, 0.0}};
+  scene.fabric.mesh.size = mesh_size;
+  ImperfectionSpec unevenness;
+  unevenness.amplitude = 5e-4;
+  unevenness.seed = 1;
+  scene.fabric.imperfection = unevenness;
+  scene.material.thickness = 5e-4;
+  scene.material.areal_weight = kWeight;
+  scene.material.membrane = IsotropicMembrane{1e7, 0.3};
+  scene.material.bending.warp = LinearBending{kWeight * std::pow(bending_length, 3)};
+  scene.supports.push_back(
+      {"discs", Selection{CircleSelection{{0, 0}, 0.09}, std::nullopt}, Fixity::kClamp});
+  Stage hang;
+  hang.name = "hang";
+  hang.kind = StageKind::kGravity;
+  scene.stages.push_back(hang);
+  return scene;
+}
+
+struct Drape {
+  double coefficient = NAN;
+  int nodes = -1;
+};
+
+// Solves the test to λ = 1 (stable at the end, or the test fails) and measures it.
+Drape Measure(double bending_length, double mesh_size) {
+  const Scene scene = Cusick(bending_length, mesh_size);
+  const ShellModel model = BuildShellModel(scene);
+  ShellSolver solver(scene, model, SolverOptions::FromScene(scene.solver));
+  StepState last;
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    last = s;
+    return StepDecision::kContinue;
+  }});
+  EXPECT_TRUE(summary.IsComplete()) << "c = " << bending_length << ": " << summary.message;
+  EXPECT_EQ(last.negative_pivots, 0);
+  const DrapeMeasurement m =
+      MeasureDrape(last.state.positions, model.mesh.quads, DrapeTestFor(scene, model.mesh, {}, {}));
+  std::printf("c = %.1f cm, mesh %.2f cm: DC %.4f, %zu nodes\n",
+              bending_length * 100,
+              mesh_size * 100,
+              m.drape_coefficient,
+              m.nodes.size());
+  return {m.drape_coefficient, static_cast<int>(m.nodes.size())};
+}
+
+TEST(CusickDrape, TheCoefficientRisesAndTheNodesDoNotWithTheBendingLength) {
+  std::vector<Drape> family;
+  for (double c : {0.015, 0.025, 0.04}) family.push_back(Measure(c, 0.01));
+  for (size_t k = 1; k < family.size(); ++k) {
+    EXPECT_GT(family[k].coefficient, family[k - 1].coefficient + 0.05) << k;
+    EXPECT_LE(family[k].nodes, family[k - 1].nodes) << k;
+  }
+  for (const Drape& d : family) {
+    EXPECT_GT(d.coefficient, 0);
+    EXPECT_LT(d.coefficient, 1);
+    EXPECT_GE(d.nodes, 3);  // a hanging specimen folds, into 3 to 10 nodes in any lab
+  }
+}
+
+TEST(CusickDrape, AStiffFabricsCoefficientIsConvergedWithTheMesh) {
+  const Drape coarse = Measure(0.04, 0.01), fine = Measure(0.04, 0.0075);
+  EXPECT_NEAR(coarse.coefficient, fine.coefficient, 0.02);
+}
+
+}  // namespace
+}  // namespace drape
