@@ -183,9 +183,12 @@ MinimiserOutcome MinimiseEnergy(EquilibriumSystem& system,
     if (AtRest(system, external, newton, state, out)) {
       result.negative_pivots = system.Factorize().negative_pivots;
       if (result.negative_pivots == 0) return finish(NewtonOutcome::Status::kConverged, "");
-      // An equilibrium, but a saddle: the energy falls along its unstable modes.
-      if (restarts++ >= settings.max_restarts ||
-          !LeaveSaddle(system, 1e-3 * system.model().characteristic_length, state))
+      // An equilibrium, but a saddle: the energy falls along its unstable
+      // modes. A push that falls back onto the same saddle is doubled.
+      if (restarts >= settings.max_restarts ||
+          !LeaveSaddle(system,
+                       std::ldexp(1e-3, restarts++) * system.model().characteristic_length,
+                       state))
         return finish(NewtonOutcome::Status::kDiverged,
                       "the minimiser ends at an unstable equilibrium (" +
                           std::to_string(result.negative_pivots) + " negative pivots)");

@@ -35,8 +35,9 @@ struct MinimiserSettings {
   double smallest_drag = 1e-9;  // below it the step is Newton's own (μ = 0)
   double largest_drag = 1e12;   // beyond it no step is found: the minimiser gives up
   // A saddle reached (‖R‖ converged, some pivots negative) is left along its
-  // lowest mode this many times before the minimiser gives up.
-  int max_restarts = 3;
+  // lowest mode this many times before the minimiser gives up, each push
+  // twice the last (the first 1e-3 of the part's size).
+  int max_restarts = 5;
   // A node this many times the part's size (its diagonal) from where it
   // started ends the search: nothing holds the part (a sheet sliding down a
   // table steeper than its friction allows). Left to go on, such a part

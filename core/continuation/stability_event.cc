@@ -26,6 +26,8 @@ const char* ToString(SnapTrigger trigger) {
       return "sliding";
     case SnapTrigger::kRelease:
       return "release";
+    case SnapTrigger::kStalled:
+      return "stalled";
   }
   return "?";
 }

@@ -23,11 +23,13 @@ enum class Branch {
 // kSliding: a part held only by contact whose every node in contact slides
 // (its stabilisation springs carry what friction cannot), or that would not
 // settle at a stage's end. kRelease: a hold stage that releases grippers
-// from a state the part cannot rest in without them.
-enum class SnapTrigger { kLimit, kBifurcation, kStart, kSliding, kRelease };
+// from a state the part cannot rest in without them. kStalled: a path whose
+// steps cut back until they gave up, past its start (a fold of the path too
+// sharp to step round, or one the stability test did not see).
+enum class SnapTrigger { kLimit, kBifurcation, kStart, kSliding, kRelease, kStalled };
 const char* ToString(StabilityKind kind);  // "limit", "bifurcation", "snap"
 const char* ToString(Branch branch);       // "fundamental", "stable", "none"
-// "limit", "bifurcation", "start", "sliding", "release"
+// "limit", "bifurcation", "start", "sliding", "release", "stalled"
 const char* ToString(SnapTrigger trigger);
 
 // A change in the number of negative pivots between two converged steps: the

@@ -86,6 +86,7 @@ StageOutcome AfterFailedStep(SolveRun& run,
                              const ContinuationStep& step,
                              PathPosition& at,
                              int& cuts_in_a_row,
+                             int& stalled_in_a_row,
                              StageSummary& stage) {
   const Stage& spec = run.scene.stages[index];
   StageOutcome o = CutBack(run, step, spec, at.lambda, cuts_in_a_row, stage);
@@ -93,9 +94,18 @@ StageOutcome AfterFailedStep(SolveRun& run,
     at.arc_length = 0.5 * step.arc_length;
     return o;
   }
-  if (!CanSnapFromStart(run, stage, at.lambda, o)) return o;
   PathPoint landed;
-  if (StageOutcome s = SnapFromStart(run, index, loading, o, stage, landed); !s.GoesOn()) return s;
+  if (CanSnapFromStart(run, stage, at.lambda, o)) {
+    if (StageOutcome s = SnapFromStart(run, index, loading, o, stage, landed); !s.GoesOn())
+      return s;
+  } else if (CanSnapWhereStalled(run, stage, at.lambda, stalled_in_a_row, o)) {
+    if (StageOutcome s = SnapWhereStalled(run, index, loading, o, at.lambda, stage, landed);
+        !s.GoesOn())
+      return s;
+    ++stalled_in_a_row;
+  } else {
+    return o;
+  }
   at.GoOnAfterSnap(landed.lambda);
   cuts_in_a_row = 0;
   return StageOutcome::On();
@@ -112,7 +122,7 @@ StageOutcome RunArcLength(SolveRun& run,
   ArcLengthStepper stepper = run.Stepper(loading);
   const StepPolicy policy = options.Stepping();
   PathPosition at;
-  int cuts_in_a_row = 0;
+  int cuts_in_a_row = 0, stalled_in_a_row = 0;
   while (at.lambda < 1.0 - 1e-12) {
     if (run.summary.steps >= options.max_steps) return MaxStepsReached(run, spec, at.lambda);
     const ShellState saved = run.state;
@@ -129,7 +139,8 @@ StageOutcome RunArcLength(SolveRun& run,
       at.max_arc_length = step.arc_length * options.max_increment / spec.initial_increment;
     if (step.status != NewtonOutcome::Status::kConverged) {
       run.state = saved;
-      if (StageOutcome o = AfterFailedStep(run, index, loading, step, at, cuts_in_a_row, stage);
+      if (StageOutcome o = AfterFailedStep(
+              run, index, loading, step, at, cuts_in_a_row, stalled_in_a_row, stage);
           !o.GoesOn())
         return o;
       continue;
@@ -140,13 +151,15 @@ StageOutcome RunArcLength(SolveRun& run,
     if (run.contact && run.contact->friction() > 0 &&
         !PassContact(run, step.landed ? 1.0 : step.lambda, loading, step, passes.emplace())) {
       run.state = saved;
-      if (StageOutcome o = AfterFailedStep(run, index, loading, step, at, cuts_in_a_row, stage);
+      if (StageOutcome o = AfterFailedStep(
+              run, index, loading, step, at, cuts_in_a_row, stalled_in_a_row, stage);
           !o.GoesOn())
         return o;
       continue;
     }
     if (step.lambda < kLowestLambda) return RunsBackTooFar(spec, index);
     cuts_in_a_row = 0;
+    stalled_in_a_row = 0;
     const std::optional<StabilityEvent> event =
         PivotChange(run, stepper, step, run.lambda_direction);
     auto crossing = [&] {

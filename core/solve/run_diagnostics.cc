@@ -5,10 +5,14 @@
 
 namespace drape {
 
+bool HeldOnlyByFrictionlessContact(const SolveRun& run) {
+  return run.contact && run.contact->stabilization() > 0 && run.contact->friction() == 0;
+}
+
 std::string ContactHint(const SolveRun& run) {
   if (!run.contact) return "";
   std::string hint;
-  if (run.contact->stabilization() > 0 && run.contact->friction() == 0)
+  if (HeldOnlyByFrictionlessContact(run))
     // A hanging part slides off a frictionless form the way a chain runs off
     // a pulley: no stable rest exists for the path to reach.
     hint +=

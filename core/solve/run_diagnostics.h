@@ -12,6 +12,10 @@ namespace drape {
 // What a user can change when a stage cannot take its next step.
 std::string WhatToChange(const SolveRun& run, const Stage& spec, const StageSummary& stage);
 
+// Nothing holds the part but frictionless contact (no support, no gripper:
+// the contact's stabilisation springs are on): it may have no stable rest.
+bool HeldOnlyByFrictionlessContact(const SolveRun& run);
+
 // Causes that lie in the contact settings ("" when none applies): a part held
 // by nothing but frictionless contact, a penalty far above the automatic one.
 std::string ContactHint(const SolveRun& run);

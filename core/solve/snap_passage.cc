@@ -21,6 +21,12 @@ constexpr int kLimitTries = 3;
 // The minimiser's corrections, in units of the options' Newton limit: a jump
 // takes tens of steps where a path step takes one.
 constexpr int kMinimiserIterationsPerNewton = 40;
+// A stalled path jumps this fraction of the stage's first increment past
+// where it stalled; at most kStalledSnaps times without a step converging
+// between them, so that a path the stepper cannot follow is not crossed
+// jump by jump.
+constexpr double kStalledIncrement = 0.1;
+constexpr int kStalledSnaps = 5;
 
 double LargestTranslation(const ShellState& from, const ShellState& to) {
   return (to.positions - from.positions).rowwise().norm().maxCoeff();
@@ -65,6 +71,8 @@ const char* SnapCause(SnapTrigger trigger) {
       return "every node in contact slides, held only by the stabilisation springs, so";
     case SnapTrigger::kRelease:
       return "released from its grippers where it cannot rest without them,";
+    case SnapTrigger::kStalled:
+      return "where its path cannot be followed (every cut-back of the step failed), just";
   }
   return "?";
 }
@@ -182,6 +190,33 @@ bool CanSnapFromStart(const SolveRun& run,
          run.options.branching == Branching::kStable;
 }
 
+namespace {
+
+// The jump from where a stage is stuck (`start`), recorded; or `stuck`'s
+// stop with what the minimiser found added.
+StageOutcome SnapWhereStuck(SolveRun& run,
+                            int index,
+                            const StageLoading& loading,
+                            const StageOutcome& stuck,
+                            const SnapStart& start,
+                            StageSummary& stage,
+                            PathPoint& landed) {
+  const Jump jump = JumpFrom(run, loading, start);
+  if (jump.outcome.newton.status != NewtonOutcome::Status::kConverged &&
+      jump.outcome.newton.status != NewtonOutcome::Status::kCancelled) {
+    run.CountIterations(jump.outcome.newton.iterations, stage);
+    return StageOutcome::Stop(
+        stuck.termination,
+        stuck.message + "; nor does it come to rest at λ = " + Format("%.6g", start.lambda) + " (" +
+            jump.outcome.newton.reason + ")" +
+            (jump.outcome.unheld ? SnapAdvice(run, start.before.state, start.trigger, jump.outcome)
+                                 : std::string()));
+  }
+  return RecordSnap(run, index, loading, start, jump, /*record_before=*/false, stage, landed);
+}
+
+}  // namespace
+
 StageOutcome SnapFromStart(SolveRun& run,
                            int index,
                            const StageLoading& loading,
@@ -190,18 +225,33 @@ StageOutcome SnapFromStart(SolveRun& run,
                            PathPoint& landed) {
   const double lambda = std::min(1.0, run.scene.stages[index].initial_increment);
   const SnapStart start{PathPoint{run.state, 0.0, {}}, run.state, lambda, SnapTrigger::kStart, 0};
-  const Jump jump = JumpFrom(run, loading, start);
-  if (jump.outcome.newton.status != NewtonOutcome::Status::kConverged &&
-      jump.outcome.newton.status != NewtonOutcome::Status::kCancelled) {
-    run.CountIterations(jump.outcome.newton.iterations, stage);
-    return StageOutcome::Stop(
-        stuck.termination,
-        stuck.message + "; nor does it come to rest at λ = " + Format("%.6g", lambda) + " (" +
-            jump.outcome.newton.reason + ")" +
-            (jump.outcome.unheld ? SnapAdvice(run, start.before.state, start.trigger, jump.outcome)
-                                 : std::string()));
-  }
-  return RecordSnap(run, index, loading, start, jump, /*record_before=*/false, stage, landed);
+  return SnapWhereStuck(run, index, loading, stuck, start, stage, landed);
+}
+
+bool CanSnapWhereStalled(const SolveRun& run,
+                         const StageSummary& stage,
+                         double lambda,
+                         int stalled_in_a_row,
+                         const StageOutcome& stuck) {
+  // A part only frictionless contact holds may have no rest to jump to: its
+  // stalled path is reported as such (ContactHint), not crossed.
+  return stuck.termination == Termination::kStepTooSmall && stage.steps > 0 && lambda > 0 &&
+         lambda < 1 && stalled_in_a_row < kStalledSnaps &&
+         run.options.branching == Branching::kStable && !HeldOnlyByFrictionlessContact(run);
+}
+
+StageOutcome SnapWhereStalled(SolveRun& run,
+                              int index,
+                              const StageLoading& loading,
+                              const StageOutcome& stuck,
+                              double lambda,
+                              StageSummary& stage,
+                              PathPoint& landed) {
+  const double past =
+      std::min(1.0, lambda + kStalledIncrement * run.scene.stages[index].initial_increment);
+  const SnapStart start{
+      PathPoint{run.state, lambda, {}}, run.state, past, SnapTrigger::kStalled, 0};
+  return SnapWhereStuck(run, index, loading, stuck, start, stage, landed);
 }
 
 StageOutcome SnapAtLimit(SolveRun& run,

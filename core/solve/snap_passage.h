@@ -61,6 +61,28 @@ bool CanSnapFromStart(const SolveRun& run,
                       double lambda,
                       const StageOutcome& stuck);
 
+// Whether a stage whose path stalled past its start (its step cut back until
+// it gave up, `stuck`) can snap from there: under `stable` branching, fewer
+// than a few times in a row without a converged step between.
+bool CanSnapWhereStalled(const SolveRun& run,
+                         const StageSummary& stage,
+                         double lambda,
+                         int stalled_in_a_row,
+                         const StageOutcome& stuck);
+
+// A path that cannot be followed from its last point at `lambda`: the part
+// jumps, by energy descent from there, to the rest state a tenth of the
+// stage's first increment further on (SnapTrigger::kStalled). A fold of the
+// path too sharp to step round is passed so, as a limit point is. On
+// failure, `stuck`'s stop with what the minimiser found added.
+StageOutcome SnapWhereStalled(SolveRun& run,
+                              int index,
+                              const StageLoading& loading,
+                              const StageOutcome& stuck,
+                              double lambda,
+                              StageSummary& stage,
+                              PathPoint& landed);
+
 // A part that cannot carry the first increment where it starts (a mechanism:
 // held at two corners, it swings about the line through them) falls to the
 // rest state at that increment's λ. On failure, `stuck`'s stop with what the

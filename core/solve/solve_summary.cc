@@ -19,6 +19,8 @@ const char* SnapPlace(SnapTrigger trigger) {
       return "state where every node in contact slid, held only by the stabilisation springs";
     case SnapTrigger::kRelease:
       return "release";
+    case SnapTrigger::kStalled:
+      return "point where its path stalled";
   }
   return "?";
 }
