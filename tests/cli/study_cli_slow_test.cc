@@ -7,10 +7,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 
@@ -83,6 +85,45 @@ TEST(StudyCli, ATwentyFourRunSweepResumesAfterCtrlC) {
   for (const auto& [name, text] : before) EXPECT_EQ(after.at(name), text) << name;
   const auto rows = test::ReadCsv(out / "study.csv");
   EXPECT_EQ(rows.size(), 26u);  // header, 24 runs, the reference
+}
+
+// The shipped Cusick study: three specimens, each row with its drape
+// coefficient and node count as `drape measure` gives them for that run's
+// result, and the line that reports their mean and standard deviation
+// computed here from the column (a minute and a half under the sanitizers:
+// the slow tier). A study of a scene that is no drape test has no such
+// columns (study_cli_test.cc).
+TEST(StudyCli, CusickSpecimensReportTheirDrapeCoefficientsAndTheirSpread) {
+  const test::TempDir dir_("study-cusick");
+  const fs::path study = test::SourceDir() / "resources" / "studies" / "cusick-specimens.json";
+  const auto r = test::RunDrape("study '" + study.string() + "' -o '" +
+                                (dir_.path() / "out").string() + "' --jobs 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows = test::ReadCsv(dir_.path() / "out" / "study.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  const size_t dc_column = test::Column(rows[0], "drape_coefficient");
+  const size_t nodes_column = test::Column(rows[0], "drape_nodes");
+  std::vector<double> dc, nodes;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::string run = rows[i][0];
+    const auto m =
+        test::RunDrape("measure '" + (dir_.path() / "out" / "runs" / run / "result").string() +
+                       "' --drape-coefficient --json");
+    ASSERT_EQ(m.exit_code, 0) << m.output;
+    const auto measured = nlohmann::json::parse(m.output);
+    dc.push_back(std::stod(rows[i][dc_column]));
+    nodes.push_back(std::stod(rows[i][nodes_column]));
+    EXPECT_NEAR(dc.back(), measured["drape_coefficient"].get<double>(), 1e-8) << run;
+    EXPECT_EQ(nodes.back(), measured["nodes"].get<int>()) << run;
+  }
+  const double mean = (dc[0] + dc[1] + dc[2]) / 3;
+  double ss = 0;
+  for (double x : dc) ss += (x - mean) * (x - mean);
+  char expected[64];
+  std::snprintf(
+      expected, sizeof expected, "drape coefficient %.3f ± %.3f", mean, std::sqrt(ss / 2));
+  EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  EXPECT_NE(r.output.find("3 specimens"), std::string::npos) << r.output;
 }
 
 }  // namespace
