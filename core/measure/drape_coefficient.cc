@@ -1,6 +1,7 @@
 #include "core/measure/drape_coefficient.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -26,6 +27,17 @@ DrapeMeasurement MeasureDrape(const Eigen::MatrixX3d& positions,
   const double hanging = std::sqrt(m.specimen_area / M_PI) - options.disc_radius;
   m.nodes = FindDrapeNodes(m.profile, options.node_prominence * hanging);
   return m;
+}
+
+std::string DrapeSummary(const DrapeMeasurement& m) {
+  char text[96];
+  std::snprintf(text,
+                sizeof text,
+                "drape coefficient %.3f · %zu %s",
+                m.drape_coefficient,
+                m.nodes.size(),
+                m.nodes.size() == 1 ? "node" : "nodes");
+  return text;
 }
 
 }  // namespace drape

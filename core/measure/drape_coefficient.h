@@ -3,6 +3,7 @@
 // reports them.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -34,6 +35,9 @@ struct DrapeMeasurement {
   RadialProfile profile;         // about the centre
   std::vector<DrapeNode> nodes;
 };
+
+// "drape coefficient 0.905 · 4 nodes": what the overlay and the workbench say.
+std::string DrapeSummary(const DrapeMeasurement& m);
 
 // Throws std::invalid_argument for a disc not smaller than the specimen, a
 // non-positive disc radius or area, or a state that is not finite.

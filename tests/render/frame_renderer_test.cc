@@ -422,6 +422,7 @@ TEST_F(FrameRendererTest, TheDrapemetersViewFillsTheShadowAndDrawsTheDisc) {
   }
   RenderOptions options = Bare(640, 480);
   options.camera.view = "top";
+  options.floor = true;  // asked for, but no grid may cross the shadow
   options.drape_shadow = DrapeTestFor(scene, model.mesh, std::nullopt, std::nullopt);
   FrameRenderer renderer(scene, model, options, RunBounds(scene, {&model.reference, &state}));
   Frame frame;

@@ -1,6 +1,7 @@
 #include "ui/render/drape_shadow_actors.h"
 
 #include "core/measure/drape_test_setup.h"
+#include "ui/render/scene_actors.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -28,15 +29,6 @@ constexpr double kShadowColour[3] = {0.22, 0.24, 0.32};
 constexpr double kDiscColour[3] = {0.85, 0.15, 0.1};
 constexpr double kSpecimenColour[3] = {0.45, 0.47, 0.5};
 constexpr int kRimPoints = 360;
-
-Ptr<vtkActor> ActorOf(vtkPolyData* data) {
-  auto mapper = Ptr<vtkPolyDataMapper>::New();
-  mapper->SetInputData(data);
-  mapper->ScalarVisibilityOff();
-  auto actor = Ptr<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
-}
 
 void AddRing(vtkPoints* points, vtkCellArray* lines, const std::vector<Eigen::Vector3d>& ring) {
   const vtkIdType first = points->GetNumberOfPoints();
@@ -107,6 +99,8 @@ DrapeShadowActors::DrapeShadowActors(vtkRenderer* renderer,
   renderer->AddActor(specimen_rim_);
 
   shadow_ = ActorOf(Ptr<vtkPolyData>::New());
+  // The triangulator's output carries no colours of its own to map.
+  shadow_->GetMapper()->ScalarVisibilityOff();
   shadow_->GetProperty()->SetColor(kShadowColour[0], kShadowColour[1], kShadowColour[2]);
   shadow_->GetProperty()->LightingOff();
   renderer->AddActor(shadow_);

@@ -56,14 +56,6 @@ constexpr double kSupport[3] = {0.25, 0.25, 0.28};
 constexpr double kGripper[3] = {0.85, 0.15, 0.15};
 constexpr double kPath[3] = {0.10, 0.45, 0.25};
 
-Ptr<vtkActor> ActorOf(vtkPolyData* data) {
-  auto mapper = Ptr<vtkPolyDataMapper>::New();
-  mapper->SetInputData(data);
-  auto actor = Ptr<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
-}
-
 // Points as small spheres, `radius` [m].
 struct Glyphs {
   Ptr<vtkPoints> points = Ptr<vtkPoints>::New();
@@ -167,7 +159,9 @@ struct FrameRenderer::Impl {
     AddHeldPoints(0.006 * size);
     if (options.paths) AddPaths(0.012 * size);
     AddProbes();
-    if (options.floor && !HasPlane()) AddFloor();
+    // The drapemeter's shadow lies on its own plane under the hanging part:
+    // a grid there would cross it.
+    if (options.floor && !HasPlane() && !options.drape_shadow) AddFloor();
     AddOverlay();
     if (options.drape_shadow)
       shadow = std::make_unique<DrapeShadowActors>(renderer, *options.drape_shadow, bounds);
@@ -496,15 +490,8 @@ struct FrameRenderer::Impl {
                     frame.lambda);
     std::string shown = text;
     if (shadow) {
-      const DrapeMeasurement& m = *(drape = shadow->Place(model.mesh, state));
-      char drape[128];
-      std::snprintf(drape,
-                    sizeof drape,
-                    "\ndrape coefficient %.3f   %zu %s",
-                    m.drape_coefficient,
-                    m.nodes.size(),
-                    m.nodes.size() == 1 ? "node" : "nodes");
-      shown += drape;
+      drape = shadow->Place(model.mesh, state);
+      shown += "\n" + DrapeSummary(*drape);
     }
     overlay->SetInput(shown.c_str());
     renderer->ResetCameraClippingRange();

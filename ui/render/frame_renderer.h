@@ -55,7 +55,7 @@ struct RenderOptions {
   UnitSystem units = UnitSystem::kSI;
   bool edges = false;      // mesh lines on the surface
   bool thickness = false;  // both faces, h apart, instead of the midsurface
-  bool floor = true;       // a grid under the part (unless a plane obstacle is there)
+  bool floor = true;  // a grid under the part (unless a plane obstacle or the shadow is there)
   bool paths = true;       // gripper paths as polylines with an arrow
   bool overlay = true;     // scene name, stage, step, λ
   // The drapemeter's view (a Cusick test, docs/cusick.md): the state's

@@ -1,5 +1,6 @@
 #include "ui/render/scene_actors.h"
 
+#include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
@@ -7,6 +8,7 @@
 #include <vtkPlaneSource.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkSTLReader.h>
 #include <vtkSphereSource.h>
 #include <vtkTransform.h>
@@ -160,6 +162,14 @@ std::vector<std::vector<Eigen::Vector3d>> GripperPaths(const Scene& scene,
   for (const CarriedMove& m : GripperMoves(scene, model))
     paths.push_back(SamplePath(scene.stages[m.stage].moves[m.move].path, m.start));
   return paths;
+}
+
+vtkSmartPointer<vtkActor> ActorOf(vtkPolyData* data) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
 }
 
 }  // namespace drape

@@ -12,6 +12,7 @@
 #include "core/model/mesh.h"
 #include "core/model/scene.h"
 
+class vtkActor;
 class vtkPolyData;
 
 namespace drape {
@@ -29,6 +30,9 @@ vtkSmartPointer<vtkPolyData> FabricSurface(
 // std::runtime_error for a mesh file VTK cannot read.
 vtkSmartPointer<vtkPolyData> ObstacleSurface(const Obstacle& obstacle,
                                              const Eigen::AlignedBox3d& bounds);
+
+// An actor drawing `data` through a poly-data mapper of its own.
+vtkSmartPointer<vtkActor> ActorOf(vtkPolyData* data);
 
 // The path each gripper's held nodes' centroid follows over the stages, one
 // polyline per move (in order), starting from the reference positions.

@@ -303,10 +303,7 @@ void ViewController::ShowDrape() {
   const auto& m = renderer_->drape();
   drape_label_->setVisible(m.has_value());
   if (!m) return;
-  drape_label_->setText(QString("drape coefficient %1 · %2 %3")
-                            .arg(m->drape_coefficient, 0, 'f', 3)
-                            .arg(m->nodes.size())
-                            .arg(m->nodes.size() == 1 ? "node" : "nodes"));
+  drape_label_->setText(QString::fromStdString(DrapeSummary(*m)));
   QStringList nodes;
   for (const DrapeNode& n : m->nodes)
     nodes << QString("%1° (%2)")
