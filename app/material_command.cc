@@ -207,9 +207,10 @@ int RunList(bool json) {
 // reader builds of it.
 struct TextileFigures {
   double thickness_mm = 0, weight_g_per_m2 = 0;
-  double bending_warp = 0, bending_weft = 0;  // Kawabata B [gf·cm²/cm]
-  double shear = 0;                           // G [gf/(cm·deg)]
-  double tensile_warp = 0, tensile_weft = 0;  // E·h [gf/cm]
+  double bending_warp = 0, bending_weft = 0;        // Kawabata B [gf·cm²/cm]
+  double hysteresis_warp = 0, hysteresis_weft = 0;  // 2HB [gf·cm/cm]
+  double shear = 0;                                 // G [gf/(cm·deg)]
+  double tensile_warp = 0, tensile_weft = 0;        // E·h [gf/cm]
   double poisson_ratio = 0;
   std::string membrane, bending_warp_law, bending_weft_law;
 };
@@ -275,6 +276,9 @@ TextileFigures FiguresOf(const Material& m) {
                         : warp;
   f.bending_warp = KawabataB(*warp);
   f.bending_weft = KawabataB(*weft);
+  f.hysteresis_warp = m.bending.warp_hysteresis.width / kGfCmPerCm;
+  f.hysteresis_weft =
+      (m.bending.weft ? m.bending.weft_hysteresis : m.bending.warp_hysteresis).width / kGfCmPerCm;
   f.bending_warp_law = LawName(m.bending.warp);
   f.bending_weft_law = LawName(weft_law);
   return f;
@@ -303,6 +307,8 @@ nlohmann::ordered_json FiguresJson(const std::string& library,
           {"bending_law_weft", f.bending_weft_law},
           {"bending_rigidity_warp_gf_cm2_per_cm", Finite(f.bending_warp)},
           {"bending_rigidity_weft_gf_cm2_per_cm", Finite(f.bending_weft)},
+          {"bending_hysteresis_warp_gf_cm_per_cm", Finite(f.hysteresis_warp)},
+          {"bending_hysteresis_weft_gf_cm_per_cm", Finite(f.hysteresis_weft)},
           {"membrane", f.membrane},
           {"shear_rigidity_gf_per_cm_deg", Finite(f.shear)},
           {"tensile_stiffness_warp_gf_per_cm", Finite(f.tensile_warp)},
@@ -329,6 +335,10 @@ void PrintFigures(const std::string& library,
               f.bending_warp,
               f.bending_weft,
               laws.c_str());
+  std::printf("  bending hysteresis 2HB     warp %.4g, weft %.4g gf*cm/cm%s\n",
+              f.hysteresis_warp,
+              f.hysteresis_weft,
+              f.hysteresis_warp > 0 || f.hysteresis_weft > 0 ? "" : " (none)");
   std::printf(
       "  shear rigidity G           %.4g gf/(cm*deg) (%s membrane)\n", f.shear, f.membrane.c_str());
   std::printf(
@@ -339,7 +349,8 @@ void PrintFigures(const std::string& library,
   std::printf("  Poisson ratio              %.4g\n", f.poisson_ratio);
   std::printf(
       "B: the strip law's mean slope between K = 0.5 and 1.5 1/cm, as KES-FB2 reads it.\n"
-      "Not modelled: hysteresis (2HB, 2HG) and the tensile curve's nonlinearity (LT).\n");
+      "2HB: the loop's width, modelled as a frictional moment +-HB (docs/bending.md).\n"
+      "Not modelled: shear hysteresis (2HG) and the tensile curve's nonlinearity (LT).\n");
 }
 
 // The names a scene could use, for an unknown one.

@@ -41,10 +41,32 @@ Eigen::VectorXd ElementMaximum(const ShellModel& model,
   return out;
 }
 
-Eigen::Vector3d Moment(const ShellSection& section, const Eigen::Vector3d& curvature) {
-  if (!section.bending_law) return section.bending * curvature;
+// The slip of element e (zero when the state has no history: as if every
+// Gauss point had been bent monotonically from flat).
+const ElementSlip* SlipOf(const ShellState& state, int e) {
+  return state.bending_slip.empty() ? nullptr : &state.bending_slip[e];
+}
+
+// The moment at Gauss point `gauss` of element e, the frictional one included.
+Eigen::Vector3d Moment(const ShellSection& section,
+                       const Eigen::Vector3d& curvature,
+                       const ShellState& state,
+                       int e,
+                       int gauss) {
   PlateBendingResponse r;
-  section.bending_law->Evaluate(curvature, /*want_tangent=*/false, r);
+  if (!section.bending_law)
+    r.moment = section.bending * curvature;
+  else
+    section.bending_law->Evaluate(curvature, /*want_tangent=*/false, r);
+  if (section.friction) {
+    const ElementSlip* slip = SlipOf(state, e);
+    AddBendingFriction(*section.friction,
+                       curvature,
+                       slip ? *slip : ElementSlip::Zero().eval(),
+                       gauss,
+                       /*want_tangent=*/false,
+                       r);
+  }
   return r.moment;
 }
 
@@ -100,8 +122,9 @@ Eigen::VectorXd EvaluateField(FieldKind kind, const ShellModel& model, const She
     case FieldKind::kBendingMoment:
       return ElementMaximum(model, state, [&](int e, const ElementNodes& n) {
         double m = 0;
-        for (const auto& k : BendingStrains(model.elements[e], n.x, n.t))
-          m = std::max(m, LargestPrincipal(Moment(model.section, k), 1));
+        const auto strains = BendingStrains(model.elements[e], n.x, n.t);
+        for (int p = 0; p < 4; ++p)
+          m = std::max(m, LargestPrincipal(Moment(model.section, strains[p], state, e, p), 1));
         return m;
       });
     case FieldKind::kMembraneStrain:
@@ -120,8 +143,12 @@ Eigen::VectorXd EvaluateField(FieldKind kind, const ShellModel& model, const She
           element.directors.col(k) = state.Director(node);
         }
         ElementEnergy energy;
-        EvaluateShellElement(
-            model.elements[e], model.section, element, ElementOutput::kEnergy, energy);
+        EvaluateShellElement(model.elements[e],
+                             model.section,
+                             element,
+                             ElementOutput::kEnergy,
+                             energy,
+                             SlipOf(state, e));
         double area = 0;
         for (const auto& gp : model.elements[e].gauss) area += gp.area;
         return energy.value / area;

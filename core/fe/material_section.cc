@@ -106,6 +106,29 @@ std::shared_ptr<const MomentCurvatureLaw> MakeStripLaw(const BendingLaw& law,
   return strip;
 }
 
+namespace {
+
+// The frictional moment of the laws' hysteresis (2HB), on the norms their
+// plate law bends them by; null when no law has one.
+std::shared_ptr<const BendingFriction> MakeFriction(const Bending& b, double poisson_ratio) {
+  auto friction = std::make_shared<BendingFriction>();
+  if (!b.weft) {
+    if (b.warp_hysteresis.width > 0)
+      friction->families.push_back(
+          MakeFrictionFamily(IsotropicCurvatureMetric(poisson_ratio), b.warp_hysteresis.width));
+  } else {
+    for (int family : {0, 1}) {
+      const double width = (family == 0 ? b.warp_hysteresis : b.weft_hysteresis).width;
+      if (width > 0)
+        friction->families.push_back(MakeFrictionFamily(YarnCurvatureMetric(family), width));
+    }
+  }
+  if (friction->families.empty()) return nullptr;
+  return friction;
+}
+
+}  // namespace
+
 MaterialSection MakeMaterialSection(const Material& material) {
   const double h = material.thickness;
   MembraneParts membrane = MakeMembrane(material);
@@ -128,6 +151,8 @@ MaterialSection MakeMaterialSection(const Material& material) {
     plate = MakeIsotropicPlateLaw(warp, membrane.poisson_ratio);
   result.section.bending = plate->InitialTangent();
   if (!linear) result.section.bending_law = plate;
+
+  result.section.friction = MakeFriction(bending, membrane.poisson_ratio);
 
   for (const auto& [law, key] :
        {std::pair{warp, warp_key}, std::pair{weft, std::string("material.bending.weft")}}) {

@@ -104,7 +104,8 @@ double ShellAssembler::Assemble(const ShellState& state,
         element.director_tangents[k] = DirectorTangent(state.rotations[node]);
       }
       ElementEnergy result;
-      EvaluateShellElement(model_.elements[e], model_.section, element, output, result);
+      const ElementSlip* slip = state.bending_slip.empty() ? nullptr : &state.bending_slip[e];
+      EvaluateShellElement(model_.elements[e], model_.section, element, output, result, slip);
       energy += result.value;
       for (int k = 0; k < 4; ++k)
         internal.segment<kDofsPerNode>(kDofsPerNode * mesh.quads(e, k)) +=

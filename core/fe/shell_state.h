@@ -6,6 +6,8 @@
 
 #include <vector>
 
+#include "core/mechanics/bending_friction.h"
+
 namespace drape {
 
 constexpr int kDofsPerNode = 5;  // Δu (3) and the rotation increment (a, b) in the tangent basis
@@ -31,6 +33,11 @@ struct ShellState {
   // The point loads' factor here (StageLoading::Place sets it): the moments
   // about loaded edges are potentials, so the system's energy scales with it.
   double load_factor = 0;
+  // With bending hysteresis: per element, the slip curvatures its Gauss
+  // points had at the last accepted step (CommitBendingSlip); empty: none yet.
+  // Part of the state, so that a step restarted from a kept state restarts
+  // from its history too.
+  std::vector<ElementSlip> bending_slip;
 
   int NodeCount() const { return static_cast<int>(positions.rows()); }
   Eigen::Vector3d Director(int node) const { return rotations[node].col(2); }

@@ -228,6 +228,30 @@ std::optional<Run> KawabataParser::SignCurve(const SignBranches& branches, std::
                  std::string("the ") + (has_loading ? "loading" : "unloading") + " branch" + on);
 }
 
+std::optional<double> LoopWidth(const std::array<SignBranches, 2>& sides) {
+  // Kawabata reads 2HB at |K| = 1 1/cm (in the middle of the 0.5–1.5 1/cm
+  // range where B is the slope).
+  constexpr double kAt = 100.0;  // [1/m]
+  auto moment_at = [](Run run, double k) -> std::optional<double> {
+    std::ranges::sort(run, {}, &Point::k);
+    if (run.size() < 2 || k < run.front().k || k > run.back().k) return std::nullopt;
+    return MomentAt(run, k);
+  };
+  double sum = 0;
+  int count = 0;
+  for (int side = 0; side < 2; ++side) {
+    const SignBranches& b = sides[side];
+    if (!b.loading || !b.unloading) continue;
+    const double k = side == 0 ? -kAt : kAt;
+    const auto loading = moment_at(*b.loading, k), unloading = moment_at(*b.unloading, k);
+    if (!loading || !unloading) continue;
+    sum += std::abs(*loading - *unloading);
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
 KawabataCurve KawabataParser::Finish(const Run& curve) {
   if (curve.front().k >= 0.0) {
     warnings_.push_back("the data cover K >= 0 only; the curve is extended by symmetry");
@@ -242,6 +266,7 @@ KawabataCurve KawabataParser::Finish(const Run& curve) {
   result.warnings = std::move(warnings_);
   result.curvature_read = curvature_read_;
   result.moment_read = moment_read_;
+  result.hysteresis_width = loop_width_;
   return result;
 }
 

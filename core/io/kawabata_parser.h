@@ -53,6 +53,10 @@ struct SignBranches {
 // sides' curves put end to end (kawabata_curve.cc).
 std::vector<Run> SplitRuns(const std::vector<Point>& points);
 Run Joined(Run negative, const Run& positive);
+// The loop's width 2HB [N·m/m]: |M_loading − M_unloading| at |K| = 1 1/cm,
+// the mean over the signs whose two branches both reach it; nullopt when none
+// does.
+std::optional<double> LoopWidth(const std::array<SignBranches, 2>& sides);
 
 class KawabataParser {
  public:
@@ -99,6 +103,7 @@ class KawabataParser {
   char delimiter_ = ',';
   bool has_header_ = false;
   std::vector<std::string> warnings_;
+  std::optional<double> loop_width_;
   std::string curvature_read_, moment_read_;
 };
 

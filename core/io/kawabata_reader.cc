@@ -171,6 +171,7 @@ KawabataCurve KawabataParser::Parse(std::string_view text) {
     return Finish(curve);
   }
   const std::array<SignBranches, 2> branches = Classify(runs);
+  loop_width_ = LoopWidth(branches);
   const std::optional<Run> negative = SignCurve(branches[0], "K < 0");
   const std::optional<Run> positive = SignCurve(branches[1], "K > 0");
   return Finish(Joined(negative.value_or(Run{}), positive.value_or(Run{})));

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -40,6 +41,10 @@ struct KawabataCurve {
   // Which columns were read and in which units, e.g. "column 'moment' in
   // gf*cm/cm" or "column 2 in gf*cm/cm (KES units: none given)".
   std::string curvature_read, moment_read;
+  // The loop's width 2HB [N·m/m] (Kawabata's hysteresis of bending moment):
+  // |M_loading − M_unloading| at |K| = 1 1/cm, the mean over the signs whose
+  // branches both reach it; nullopt for a file without such a loop.
+  std::optional<double> hysteresis_width;
 };
 
 // What is wrong with a Kawabata file, and where: what() reads

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -29,9 +30,16 @@ class SceneParser {
   Material ReadMaterialOrLibrary(const JsonCursor& c);
   Material ReadMaterial(const JsonCursor& c);
   Bending ReadBending(const JsonCursor& c);
-  BendingLaw ReadBendingLaw(const JsonCursor& c);
+  // The law and, from its "hysteresis" key, its 2HB.
+  BendingLaw ReadBendingLaw(const JsonCursor& c, Hysteresis& hysteresis);
+  // A bare number is in `moment_unit`'s units; "measured" takes
+  // `loop_width`, the loop of the law's Kawabata file.
+  Hysteresis ReadHysteresis(const JsonCursor& law,
+                            double moment_unit,
+                            std::optional<double> loop_width);
   // A curve's points from a Kawabata file (relative to the scene's folder).
-  void ReadKawabataPoints(const JsonCursor& c, CurveBending& law);
+  // Returns the file's loop width 2HB, when it has a loop.
+  std::optional<double> ReadKawabataPoints(const JsonCursor& c, CurveBending& law);
   Selection ReadSelection(const JsonCursor& c);
   Support ReadSupport(const JsonCursor& c);
   Gripper ReadGripper(const JsonCursor& c);

@@ -160,11 +160,15 @@ Material SceneParser::ReadMaterial(const JsonCursor& c) {
 }
 
 Bending SceneParser::ReadBending(const JsonCursor& c) {
+  Bending bending;
   if (c.Has("warp") || c.Has("weft")) {
     c.ExpectObject({"warp", "weft"});
-    return Bending{ReadBendingLaw(c["warp"]), ReadBendingLaw(c["weft"])};
+    bending.warp = ReadBendingLaw(c["warp"], bending.warp_hysteresis);
+    bending.weft = ReadBendingLaw(c["weft"], bending.weft_hysteresis);
+    return bending;
   }
-  return Bending{ReadBendingLaw(c), std::nullopt};
+  bending.warp = ReadBendingLaw(c, bending.warp_hysteresis);
+  return bending;
 }
 
 namespace {
@@ -187,7 +191,8 @@ double UnitFactorAt(const JsonCursor& c, const char* key, Dimension d) {
 PolynomialBending ReadPolynomialBending(const JsonCursor& c,
                                         double moment_unit,
                                         double curvature_unit) {
-  c.ExpectObject({"model", "coefficients", "moment_unit", "curvature_unit", "valid_to"});
+  c.ExpectObject(
+      {"model", "coefficients", "moment_unit", "curvature_unit", "valid_to", "hysteresis"});
   PolynomialBending law;
   auto coefficients = c["coefficients"];
   // M = mu Σ cₖ (K/cu)ᵏ in SI, with mu and cu the SI factors of the units.
@@ -224,7 +229,7 @@ void ReadCurvePoints(const JsonCursor& c,
 
 }  // namespace
 
-void SceneParser::ReadKawabataPoints(const JsonCursor& c, CurveBending& law) {
+std::optional<double> SceneParser::ReadKawabataPoints(const JsonCursor& c, CurveBending& law) {
   law.file = ReadFileReference(c["file"]);
   KawabataOptions options;
   if (auto b = c.Find("branch")) {
@@ -247,31 +252,69 @@ void SceneParser::ReadKawabataPoints(const JsonCursor& c, CurveBending& law) {
     const KawabataCurve curve = ReadKawabata(file.is_absolute() ? file : base_ / file, options);
     for (size_t i = 0; i < curve.curvature.size(); ++i)
       law.points.push_back({curve.curvature[i], curve.moment[i]});
+    return curve.hysteresis_width;
   } catch (const KawabataError& e) {
     c["file"].Fail(e.what());
   }
 }
 
-BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c) {
+BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c, Hysteresis& hysteresis) {
   if (!c.value().is_object()) c.Fail("expected an object with a 'model'");
   int model = c["model"].Choice({"linear", "polynomial", "curve"});
   if (model == 0) {
-    c.ExpectObject({"model", "rigidity"});
+    c.ExpectObject({"model", "rigidity", "hysteresis"});
     LinearBending law;
     if (auto r = c.Find("rigidity")) law.rigidity = r->PositiveQuantity(dim::kBendingRigidity);
+    hysteresis = ReadHysteresis(c, 1.0, std::nullopt);
     return law;
   }
   const double moment_unit = UnitFactorAt(c, "moment_unit", dim::kMomentPerWidth);
   const double curvature_unit = UnitFactorAt(c, "curvature_unit", dim::kCurvature);
-  if (model == 1) return ReadPolynomialBending(c, moment_unit, curvature_unit);
+  if (model == 1) {
+    PolynomialBending law = ReadPolynomialBending(c, moment_unit, curvature_unit);
+    hysteresis = ReadHysteresis(c, moment_unit, std::nullopt);
+    return law;
+  }
 
-  c.ExpectObject({"model", "points", "file", "moment_unit", "curvature_unit", "branch", "columns"});
+  c.ExpectObject({"model",
+                  "points",
+                  "file",
+                  "moment_unit",
+                  "curvature_unit",
+                  "branch",
+                  "columns",
+                  "hysteresis"});
   CurveBending law;
+  std::optional<double> loop_width;
   if (c.OneOf({"points", "file"}) == 0)
     ReadCurvePoints(c, moment_unit, curvature_unit, law);
   else
-    ReadKawabataPoints(c, law);
+    loop_width = ReadKawabataPoints(c, law);
+  hysteresis = ReadHysteresis(c, moment_unit, loop_width);
   return law;
+}
+
+Hysteresis SceneParser::ReadHysteresis(const JsonCursor& law,
+                                       double moment_unit,
+                                       std::optional<double> loop_width) {
+  auto h = law.Find("hysteresis");
+  if (!h) return {};
+  Hysteresis hysteresis;
+  if (h->value().is_string() && h->String() == "measured") {
+    if (!law.Has("file"))
+      h->Fail("\"measured\" takes 2HB from a Kawabata file's loop; this law has no 'file'");
+    if (!loop_width)
+      h->Fail(
+          "the Kawabata file has no loop to measure 2HB on: its loading and unloading "
+          "branches do not both reach |K| = 1 1/cm");
+    return {*loop_width, true};
+  }
+  // 2HB, the loop's width; a bare number is in the law's moment_unit.
+  hysteresis.width =
+      h->value().is_number() ? h->Number() * moment_unit : h->Quantity(dim::kMomentPerWidth);
+  if (!(hysteresis.width >= 0))
+    h->Fail("2HB, the width of the moment-curvature loop, must not be negative");
+  return hysteresis;
 }
 
 }  // namespace drape

@@ -72,6 +72,15 @@ json ToJson(const BendingLaw& law) {
                     law);
 }
 
+json ToJson(const BendingLaw& law, const Hysteresis& hysteresis) {
+  json j = ToJson(law);
+  if (hysteresis.measured)
+    j["hysteresis"] = "measured";
+  else if (hysteresis.width > 0)
+    j["hysteresis"] = hysteresis.width;  // N·m/m, as the law's moment_unit (SI) says
+  return j;
+}
+
 json ToJson(const Material& m) {
   json j{{"thickness", m.thickness}, {"areal_weight", m.areal_weight}, {"angle_deg", m.angle_deg}};
   std::visit(Overloaded{
@@ -84,10 +93,12 @@ json ToJson(const Material& m) {
                  },
              },
              m.membrane);
-  if (m.bending.weft)
-    j["bending"] = {{"warp", ToJson(m.bending.warp)}, {"weft", ToJson(*m.bending.weft)}};
+  const Bending& b = m.bending;
+  if (b.weft)
+    j["bending"] = {{"warp", ToJson(b.warp, b.warp_hysteresis)},
+                    {"weft", ToJson(*b.weft, b.weft_hysteresis)}};
   else
-    j["bending"] = ToJson(m.bending.warp);
+    j["bending"] = ToJson(b.warp, b.warp_hysteresis);
   return j;
 }
 

@@ -55,8 +55,7 @@ class IsotropicPlateLaw final : public PlateBendingLaw {
  public:
   IsotropicPlateLaw(std::shared_ptr<const MomentCurvatureLaw> law, double nu)
       : law_(std::move(law)) {
-    c_ << 1, nu, 0, nu, 1, 0, 0, 0, (1 - nu) / 2;
-    c_ /= (1 - nu * nu);
+    c_ = IsotropicCurvatureMetric(nu);
   }
   void Evaluate(const Eigen::Vector3d& curvature,
                 bool want_tangent,
@@ -104,6 +103,27 @@ void RequireLaw(const std::shared_ptr<const MomentCurvatureLaw>& law, const char
 }
 
 }  // namespace
+
+Eigen::Matrix3d IsotropicCurvatureMetric(double nu) {
+  Eigen::Matrix3d c;
+  c << 1, nu, 0, nu, 1, 0, 0, 0, (1 - nu) / 2;
+  return c / (1 - nu * nu);
+}
+
+Eigen::Matrix3d YarnCurvatureMetric(int family) {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  a(family == 0 ? 0 : 1, family == 0 ? 0 : 1) = 1;
+  a(2, 2) = 0.25;
+  return a;
+}
+
+void AddCurvatureNormLaw(const MomentCurvatureLaw& law,
+                         const Eigen::Matrix3d& metric,
+                         const Eigen::Vector3d& curvature,
+                         bool want_tangent,
+                         PlateBendingResponse& response) {
+  AddNormLaw(law, metric, curvature, want_tangent, response);
+}
 
 Eigen::Matrix3d PlateBendingLaw::InitialTangent() const {
   PlateBendingResponse response;

@@ -57,4 +57,20 @@ std::unique_ptr<PlateBendingLaw> MakeIsotropicPlateLaw(
 std::unique_ptr<PlateBendingLaw> MakeWarpWeftPlateLaw(
     std::shared_ptr<const MomentCurvatureLaw> warp, std::shared_ptr<const MomentCurvatureLaw> weft);
 
+// The metrics A of the curvature norms K = √(κᵀAκ) the laws above apply
+// their strip laws to: the isotropic law's plane-stress C (ν), and yarn
+// family 0 (warp) or 1 (weft) of the warp–weft law.
+Eigen::Matrix3d IsotropicCurvatureMetric(double poisson_ratio);
+Eigen::Matrix3d YarnCurvatureMetric(int family);
+
+// Adds W(K), K = √(κᵀAκ), of the strip law `law` to `response` with its
+// derivatives in κ (the building block of both plate laws, and of the
+// frictional moment of bending_friction.h):
+//   ∂W/∂κ = (M/K) Aκ,   ∂²W/∂κ² = (M/K) A + (dM/dK − M/K)(Aκ)(Aκ)ᵀ/K².
+void AddCurvatureNormLaw(const MomentCurvatureLaw& law,
+                         const Eigen::Matrix3d& metric,
+                         const Eigen::Vector3d& curvature,
+                         bool want_tangent,
+                         PlateBendingResponse& response);
+
 }  // namespace drape

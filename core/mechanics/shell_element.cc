@@ -316,7 +316,10 @@ void EvaluateShellElement(const ShellElementReference& ref,
                           const ShellSection& section,
                           const ShellElementState& state,
                           ElementOutput output,
-                          ElementEnergy& result) {
+                          ElementEnergy& result,
+                          const ElementSlip* slip) {
+  static const ElementSlip kNoSlip = ElementSlip::Zero();
+  if (!slip) slip = &kNoSlip;
   const bool want_gradient = output != ElementOutput::kEnergy;
   const NodeColumns& x = state.positions;
   const NodeColumns& t = state.directors;
@@ -356,6 +359,16 @@ void EvaluateShellElement(const ShellElementReference& ref,
     } else {
       m = section.bending * e_b;
       bending_energy = 0.5 * e_b.dot(m);
+    }
+    if (section.friction) {
+      PlateBendingResponse friction;
+      AddBendingFriction(*section.friction, e_b, *slip, p, want_hessian, friction);
+      m += friction.moment;
+      bending_energy += friction.energy;
+      if (want_hessian) {
+        law.tangent = *bending_tangent + friction.tangent;
+        bending_tangent = &law.tangent;
+      }
     }
     result.value += gp.area * (0.5 * (e_m.dot(n) + gamma.dot(q)) + bending_energy);
     if (!want_gradient) continue;

@@ -70,12 +70,16 @@ struct ElementEnergy {
 
 enum class ElementOutput { kEnergy, kGradient, kHessian };
 
-// Energy and, as asked, gradient and Hessian at zero increment.
+// Energy and, as asked, gradient and Hessian at zero increment. With
+// bending hysteresis (section.friction) `slip` is the element's slip
+// curvature as of the last accepted step (null: none yet), and the energy
+// holds the step's incremental potential of the frictional moment.
 void EvaluateShellElement(const ShellElementReference& reference,
                           const ShellSection& section,
                           const ShellElementState& state,
                           ElementOutput output,
-                          ElementEnergy& result);
+                          ElementEnergy& result,
+                          const ElementSlip* slip = nullptr);
 
 // The bending strains κ = (κ₁₁, κ₂₂, 2κ₁₂) at the four Gauss points, in the
 // material frame [1/m]: what the section law is evaluated on.

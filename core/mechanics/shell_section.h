@@ -9,6 +9,7 @@
 
 #include <memory>
 
+#include "core/mechanics/bending_friction.h"
 #include "core/mechanics/plate_bending_law.h"
 
 namespace drape {
@@ -21,6 +22,8 @@ struct ShellSection {
   Eigen::Matrix2d shear = Eigen::Matrix2d::Zero();  // D_s = κₛ G h I [N/m]
   // Set for a nonlinear bending law, which then replaces D_b κ.
   std::shared_ptr<const PlateBendingLaw> bending_law;
+  // Set for bending hysteresis (KES 2HB), whose moment joins the law's.
+  std::shared_ptr<const BendingFriction> friction;
 };
 
 // Isotropic section: E [Pa], ν, thickness h [m]. `bending_rigidity` B [N·m]

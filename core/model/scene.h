@@ -84,9 +84,19 @@ struct CurveBending {
 };
 using BendingLaw = std::variant<LinearBending, PolynomialBending, CurveBending>;
 
+// Bending hysteresis of one law: the width 2HB of its moment–curvature loop
+// (KES-FB2), modelled as a frictional moment ±HB (bending_friction.h).
+struct Hysteresis {
+  double width = 0;       // 2HB [N·m/m]; 0: none
+  bool measured = false;  // read from the loop of the law's Kawabata file
+  friend bool operator==(const Hysteresis&, const Hysteresis&) = default;
+};
+
 struct Bending {
   BendingLaw warp;                 // the law when isotropic
   std::optional<BendingLaw> weft;  // set only for direction-dependent bending
+  Hysteresis warp_hysteresis;      // of `warp` (every direction when isotropic)
+  Hysteresis weft_hysteresis;      // of `weft`
   friend bool operator==(const Bending&, const Bending&) = default;
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/fe/bending_slip.h"
 #include "core/fe/element_fields.h"
 #include "core/model/string_format.h"
 #include "core/solve/contact_augmentation.h"
@@ -134,6 +135,8 @@ StageOutcome RecordConvergedStep(SolveRun& run,
     run.contact->Commit(run.state);
   }
   if (run.layers) MeasureLayers(run, step);
+  // The yarns' friction keeps the slip it made: the next step starts from it.
+  CommitBendingSlip(model, run.state);
   step.state = run.state;
   if (run.recorder->Record(step, classified) == StepDecision::kStop)
     return StageOutcome::Stop(

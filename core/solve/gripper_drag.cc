@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "core/continuation/energy_minimiser.h"
+#include "core/fe/bending_slip.h"
 #include "core/fe/element_orientation.h"
 #include "core/fe/stage_loading.h"
 #include "core/linalg/machine_resources.h"
@@ -214,6 +215,7 @@ DragFrame GripperDrag::MoveTo(const Eigen::Vector3d& offset) {
     frame.residual_ratio = Residual(/*fresh=*/true, residual, frame);
   }
   if (basis_.contact) basis_.contact->Commit(basis_.state);
+  CommitBendingSlip(*basis_.model, basis_.state);
   frame.offset = offset_;
   frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return frame;

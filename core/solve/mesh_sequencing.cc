@@ -59,6 +59,31 @@ class ElementGrid {
   std::vector<std::vector<int>> buckets_;
 };
 
+// The hysteresis's history on the fine mesh: each fine element takes the
+// slip of the coarse element under its centre, its Gauss points' mean per
+// friction family (the slip is a field of the fabric, piecewise smooth).
+std::vector<ElementSlip> ProlongatedSlip(const ShellState& coarse_state,
+                                         const ShellModel& fine,
+                                         const ElementGrid& grid) {
+  if (coarse_state.bending_slip.empty()) return {};
+  std::vector<ElementSlip> slip(fine.mesh.ElementCount(), ElementSlip::Zero());
+  for (int e = 0; e < fine.mesh.ElementCount(); ++e) {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (int k = 0; k < 4; ++k)
+      centre += 0.25 * fine.mesh.positions.row(fine.mesh.quads(e, k)).head<2>().transpose();
+    int c = -1;
+    double xi = 0, eta = 0;
+    if (!grid.Locate(centre, c, xi, eta)) continue;
+    const ElementSlip& from = coarse_state.bending_slip[c];
+    for (int f = 0; f < kMaxFrictionFamilies; ++f) {
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int p = 0; p < 4; ++p) mean += 0.25 * from.col(2 * p + f);
+      for (int p = 0; p < 4; ++p) slip[e].col(2 * p + f) = mean;
+    }
+  }
+  return slip;
+}
+
 }  // namespace
 
 Scene CoarsenedScene(const Scene& scene, int factor) {
@@ -91,6 +116,7 @@ ShellState Prolongate(const ShellModel& coarse,
     out.positions.row(i) += u.transpose();
     if (t.norm() > 0) out.rotations[i] = RotationFromDirector(t.normalized());
   }
+  out.bending_slip = ProlongatedSlip(coarse_state, fine, grid);
   for (const auto* group : {&fine.supports, &fine.grippers})
     for (const HeldNodes& held : *group)
       for (int node : held.nodes) {

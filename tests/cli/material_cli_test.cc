@@ -194,6 +194,38 @@ TEST(MaterialShowCli, TextNamesTheTextileUnits) {
   EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
 }
 
+// An entry's bending hysteresis is kept and shown as KES prints 2HB.
+TEST(MaterialShowCli, AnEntryKeepsItsBendingHysteresis) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("drape-2hb-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const json entry = {{"drape_material", 1},
+                      {"name", "cotton broadcloth"},
+                      {"source", "Matsudaira et al. 2015, Table 1, as reprinted"},
+                      {"description", "test entry"},
+                      {"material",
+                       {{"thickness", "0.497 mm"},
+                        {"areal_density", "123.8 g/m^2"},
+                        {"youngs_modulus", "20 MPa"},
+                        {"poisson_ratio", 0.2},
+                        {"bending",
+                         {{"model", "linear"},
+                          {"rigidity", "0.118 gf*cm^2/cm"},
+                          {"hysteresis", "0.124 gf*cm/cm"}}}}}};
+  std::ofstream(dir / "broadcloth.json") << entry.dump();
+  const test::CommandResult r =
+      test::RunCommand("DRAPE_MATERIALS='" + dir.string() + "' '" + std::string(test::DrapeCli()) +
+                           "' material show broadcloth --json",
+                       test::Captured::kStdout);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const json shown = json::parse(r.output);
+  ExpectFigure(shown, "bending_hysteresis_warp_gf_cm_per_cm", 0.124);
+  ExpectFigure(shown, "bending_hysteresis_weft_gf_cm_per_cm", 0.124);  // one law, every way
+  ExpectFigure(shown, "bending_rigidity_warp_gf_cm2_per_cm", 0.118);
+  EXPECT_EQ(ShowJson("cotton-twill")["bending_hysteresis_warp_gf_cm_per_cm"], 0.0);
+  fs::remove_all(dir);
+}
+
 TEST(MaterialShowCli, AnUnknownNameListsTheLibraryAndExitsOne) {
   const test::CommandResult r =
       test::RunDrape("material show no-such-fabric --json", test::Captured::kStderr);

@@ -256,6 +256,25 @@ TEST(KawabataReader, CottonTwillExampleAveragesToThePapersFit) {
   }
 }
 
+// 2HB, Kawabata's hysteresis of bending moment: the branches' distance at
+// |K| = 1 1/cm. The synthetic loop's is 2 h0 by construction; the cotton
+// file's header states ±0.02 gf·cm/cm, so 0.04.
+TEST(KawabataReader, TheLoopsWidthIsTwoHb) {
+  // K = 1 1/cm = 100 1/m: inside a loop of kmax 150 1/m on a 7.5 1/m grid
+  // (100 lies between samples: interpolated).
+  const KawabataCurve curve = Parse(Loop(0.7, 0.05, 150.0, 7.5));
+  ASSERT_TRUE(curve.hysteresis_width.has_value());
+  EXPECT_NEAR(*curve.hysteresis_width, 0.1, 1e-12);
+  const auto cotton = ReadKawabata(test::SourceDir() / "resources" / "materials" / "kawabata" /
+                                   "cotton-twill-warp.csv");
+  ASSERT_TRUE(cotton.hysteresis_width.has_value());
+  EXPECT_NEAR(*cotton.hysteresis_width, 0.04 * kGfCmPerCm, 1e-12);
+  // A loop that turns before 1 1/cm, and a single branch, have none.
+  EXPECT_FALSE(Parse(Loop(0.7, 0.05, 50.0, 5.0)).hysteresis_width.has_value());
+  EXPECT_FALSE(Parse("K (1/cm),M (gf*cm/cm)\n0,0\n0.5,0.3\n1,0.5\n1.5,0.7\n2,0.8\n")
+                   .hysteresis_width.has_value());
+}
+
 TEST(KawabataReader, MissingFileIsAnErrorNamingIt) {
   const auto file = std::filesystem::temp_directory_path() / "no-such-kawabata-file.csv";
   try {

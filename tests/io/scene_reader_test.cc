@@ -291,6 +291,47 @@ TEST(SceneReader, CurveLawReadsItsKawabataFile) {
   std::filesystem::remove(bad);
 }
 
+// Bending hysteresis: 2HB as a quantity, as a bare number in the law's
+// moment_unit, or "measured" from a Kawabata file's loop; per direction;
+// kept through a save; bad values named at the key.
+TEST(SceneReader, BendingHysteresisIsReadPerLaw) {
+  json doc = Minimal();
+  doc["material"]["bending"] = {
+      {"model", "linear"}, {"rigidity", "0.118 gf*cm^2/cm"}, {"hysteresis", "0.124 gf*cm/cm"}};
+  const Scene linear = SceneFromJson(doc);
+  EXPECT_NEAR(linear.material.bending.warp_hysteresis.width, 0.124 * kGf, 1e-15);
+  EXPECT_FALSE(linear.material.bending.warp_hysteresis.measured);
+  EXPECT_EQ(ParseScene(WriteSceneText(linear)).material, linear.material);
+
+  doc["material"]["bending"] = {{"model", "curve"},
+                                {"file", "../materials/kawabata/cotton-twill-warp.csv"},
+                                {"hysteresis", "measured"}};
+  const Scene measured = SceneFromJson(doc, test::ScenesDir());
+  EXPECT_NEAR(measured.material.bending.warp_hysteresis.width, 0.04 * kGf, 1e-12);
+  EXPECT_TRUE(measured.material.bending.warp_hysteresis.measured);
+  EXPECT_EQ(ParseScene(WriteSceneText(measured), test::ScenesDir()).material, measured.material);
+
+  const json polynomial = {{"model", "polynomial"},
+                           {"coefficients", {1.33387}},
+                           {"moment_unit", "gf*cm/cm"},
+                           {"curvature_unit", "1/cm"},
+                           {"valid_to", "2.5 1/cm"},
+                           {"hysteresis", 0.05}};
+  doc["material"]["bending"] = {{"warp", polynomial}, {"weft", {{"model", "linear"}}}};
+  const Scene warp_only = SceneFromJson(doc);
+  EXPECT_NEAR(warp_only.material.bending.warp_hysteresis.width, 0.05 * kGf, 1e-15);
+  EXPECT_EQ(warp_only.material.bending.weft_hysteresis.width, 0.0);
+
+  doc["material"]["bending"] = {{"model", "linear"}, {"hysteresis", "-0.1 gf*cm/cm"}};
+  EXPECT_EQ(ErrorOf(doc).rfind("material.bending.hysteresis: 2HB", 0), 0u) << ErrorOf(doc);
+  doc["material"]["bending"]["hysteresis"] = "0.1 gf*cm^2/cm";
+  EXPECT_EQ(ErrorOf(doc).rfind("material.bending.hysteresis: ", 0), 0u) << ErrorOf(doc);
+  doc["material"]["bending"]["hysteresis"] = "measured";
+  EXPECT_EQ(ErrorOf(doc),
+            "material.bending.hysteresis: \"measured\" takes 2HB from a Kawabata file's loop; "
+            "this law has no 'file'");
+}
+
 // The branch and the columns of a Kawabata file are the scene's choice, and
 // survive a save.
 TEST(SceneReader, CurveLawPicksBranchAndColumns) {

@@ -237,15 +237,22 @@ bool MaterialDialog::applyBending() {
   // One law for one direction keeps the other's (the old single law when
   // there was one): the part becomes direction dependent, never silently
   // isotropic.
+  // The hysteresis (2HB) stays with its direction; one the replaced law's
+  // file measured is kept as the number it was.
   const QString direction = direction_->currentData().toString();
+  Hysteresis warp_hysteresis = bending.warp_hysteresis;
+  Hysteresis weft_hysteresis = bending.weft ? bending.weft_hysteresis : warp_hysteresis;
   if (direction == "both") {
-    bending = Bending{*previewed_, std::nullopt};
+    warp_hysteresis.measured = false;
+    bending = Bending{*previewed_, std::nullopt, warp_hysteresis, {}};
   } else {
     const BendingLaw weft = bending.weft ? *bending.weft : bending.warp;
     if (direction == "warp") {
-      bending = Bending{*previewed_, weft};
+      warp_hysteresis.measured = false;
+      bending = Bending{*previewed_, weft, warp_hysteresis, weft_hysteresis};
     } else {
-      bending = Bending{bending.warp, *previewed_};
+      weft_hysteresis.measured = false;
+      bending = Bending{bending.warp, *previewed_, warp_hysteresis, weft_hysteresis};
     }
   }
   QString problem;
