@@ -21,6 +21,12 @@ namespace {
 // back to the stage's end.
 constexpr double kLowestLambda = -1.0;
 
+// Snaps at limit points this close in λ (relative) are at one place: after
+// the second the path is going round between two rest states whose folds
+// nearly meet (an imperfection's cusp), and it jumps past them instead.
+constexpr double kSamePlace = 1e-4;
+constexpr int kSnapsAtOnePlace = 2;
+
 StageOutcome TurnsTooOften(const Stage& spec, int index, int turns, double lambda) {
   return StageOutcome::Stop(
       Termination::kStepTooSmall,
@@ -50,6 +56,8 @@ struct PathPosition {
   double max_arc_length = 0;  // set from the first step: max_increment in its units
   std::optional<PathDirection> previous;
   double last_landing = NAN;  // λ where the last branch switch landed
+  double last_snap = NAN;     // λ where the last snap at a limit point landed
+  int snaps_here = 0;         // snaps in a row at last_snap's λ
   double lowest = 0;          // the smallest λ the path reached
   int turns = 0;              // limit points passed
 
@@ -168,9 +176,29 @@ StageOutcome RunArcLength(SolveRun& run,
     };
     if (event && SnapsAt(run, *event, step)) {
       PathPoint landed;
-      if (StageOutcome o = SnapAtLimit(run, index, loading, stepper, crossing(), stage, landed);
-          !o.GoesOn())
-        return o;
+      if (at.snaps_here >= kSnapsAtOnePlace) {
+        // From the last landing, down by energy at a larger λ.
+        run.state = saved;
+        const StageOutcome round = StageOutcome::Stop(
+            Termination::kStepTooSmall,
+            Format("stage '%s' (stages[%d]): the path snaps back and forth between two rest "
+                   "states at λ = %.6g",
+                   spec.name.c_str(),
+                   index,
+                   at.last_snap));
+        if (StageOutcome o = SnapWhereStalled(run, index, loading, round, at.lambda, stage, landed);
+            !o.GoesOn())
+          return o;
+        at.snaps_here = 0;
+      } else {
+        if (StageOutcome o = SnapAtLimit(run, index, loading, stepper, crossing(), stage, landed);
+            !o.GoesOn())
+          return o;
+        const bool here = std::abs(landed.lambda - at.last_snap) <=
+                          kSamePlace * std::max(std::abs(at.last_snap), 1e-3);
+        at.snaps_here = here ? at.snaps_here + 1 : 1;
+      }
+      at.last_snap = landed.lambda;
       at.GoOnAfterSnap(landed.lambda);
       continue;
     }
