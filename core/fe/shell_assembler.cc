@@ -88,6 +88,9 @@ double ShellAssembler::Assemble(const ShellState& state,
     values = tangent->valuePtr();
   }
   const ElementOutput output = tangent ? ElementOutput::kHessian : ElementOutput::kGradient;
+  if (!state.bending_slip.empty() &&
+      state.bending_slip.size() != static_cast<size_t>(mesh.ElementCount()))
+    throw std::invalid_argument("ShellAssembler: the state's bending slip is of another mesh");
   double energy = 0;
   for (const auto& color : colors_) {
     const int count = static_cast<int>(color.size());

@@ -402,5 +402,51 @@ TEST(ShellAssembler, ParallelAssemblyEqualsTheSerialSumOfTheElements) {
   EXPECT_LT(tangent_error, 5e-16);
 }
 
+// With bending hysteresis each element is evaluated with its own slip: the
+// assembled energy is the sum of the elements' own evaluations, each given
+// its slip (distinct per element, so a mix-up shows); a slip of another
+// mesh is refused.
+TEST(ShellAssembler, EachElementBendsWithItsOwnSlip) {
+  Scene scene = Sheet(3, 2);
+  scene.material.bending.warp_hysteresis.width = 1e-4;
+  const ShellModel model = BuildShellModel(scene);
+  ASSERT_TRUE(model.section.friction);
+  ShellState state = RandomState(model, 7);
+  SplitMix64 rng(11);
+  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
+    ElementSlip slip;
+    for (int c = 0; c < slip.cols(); ++c) slip.col(c) = test::RandomVector(rng, 20.0);
+    state.bending_slip.push_back(slip);
+  }
+  const DofMap dofs(model.NodeCount());
+  const ShellAssembler assembler(model, dofs);
+  Eigen::VectorXd internal;
+  const double energy = assembler.Assemble(state, internal, nullptr);
+  double sum = 0;
+  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
+    ShellElementState element;
+    for (int k = 0; k < 4; ++k) {
+      const int node = model.mesh.quads(e, k);
+      element.positions.col(k) = state.positions.row(node).transpose();
+      element.directors.col(k) = state.Director(node);
+      element.director_tangents[k] = DirectorTangent(state.rotations[node]);
+    }
+    ElementEnergy result;
+    EvaluateShellElement(model.elements[e],
+                         model.section,
+                         element,
+                         ElementOutput::kEnergy,
+                         result,
+                         &state.bending_slip[e]);
+    sum += result.value;
+  }
+  EXPECT_NEAR(energy, sum, 1e-12 * std::abs(sum));
+  ShellState no_slip = state;
+  no_slip.bending_slip.clear();
+  EXPECT_GT(std::abs(assembler.Assemble(no_slip, internal, nullptr) - energy), 1e-6 * energy);
+  state.bending_slip.pop_back();
+  EXPECT_THROW(assembler.Assemble(state, internal, nullptr), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace drape
