@@ -135,5 +135,46 @@ TEST(CusickDrape, AnAnisotropicFabricDrapesBetweenItsWarpAndItsWeft) {
   EXPECT_LT(both.coefficient, warp.coefficient);
 }
 
+// Matsudaira et al.'s cotton broadcloth (docs/validation.md §8) on an
+// isotropic membrane meets, at λ = 0.0345, two rest states whose folds
+// nearly meet: each snap at the limit load lands on the other's branch, and
+// the path went round between them until its time ran out (about 100 snaps
+// in 200 s). After two landings at one λ the path jumps on, a tenth of Δλ₀
+// further, as a stalled path does (docs/snaps.md).
+TEST(CusickDrape, APathThatSnapsBackAndForthAtOneLoadJumpsOn) {
+  constexpr double kGf = 9.80665e-3;
+  const double h = 0.497e-3, w = 12.38e-6 / 1e-4 * 9.80665, b = 0.118 * kGf * 1e-2;
+  Scene scene = Cusick(0.02, 0.01);
+  scene.material.thickness = h;
+  scene.material.areal_weight = w;
+  scene.material.membrane = IsotropicMembrane{9807 / h, 0.2};
+  scene.material.bending.warp = LinearBending{b};
+  ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
+  double reached = 0;
+  const SolveSummary summary = solver.Solve({[&](const StepState& s) {
+    reached = s.lambda;
+    // 60 steps: without the jump the path goes round (two steps a turn).
+    return s.lambda > 0.036 || s.step > 60 ? StepDecision::kStop : StepDecision::kContinue;
+  }});
+  int round = 0;
+  double last_landing = NAN, stalled_at = NAN;
+  for (const StabilityEvent& e : summary.stability_events) {
+    if (e.kind != StabilityKind::kSnap) continue;
+    if (e.trigger == SnapTrigger::kLimit && std::abs(e.lambda - 0.03452) < 1e-5) {
+      ++round;
+      last_landing = e.lambda;
+    }
+    if (e.trigger == SnapTrigger::kStalled && std::isnan(stalled_at)) stalled_at = e.lambda;
+  }
+  std::printf("%d snaps at λ = %.6f, then a jump at λ = %.6f; stopped at λ = %.4f\n",
+              round,
+              last_landing,
+              stalled_at,
+              reached);
+  EXPECT_EQ(round, 2);
+  EXPECT_NEAR(stalled_at, last_landing + 0.1 * 0.01, 1e-9);
+  EXPECT_GT(reached, 0.036);
+}
+
 }  // namespace
 }  // namespace drape
