@@ -137,6 +137,18 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
   return model;
 }
 
+std::array<Eigen::Vector3d, 4> ElementBendingStrains(const ShellModel& model,
+                                                     const ShellState& state,
+                                                     int e) {
+  NodeColumns x, t;
+  for (int k = 0; k < 4; ++k) {
+    const int node = model.mesh.quads(e, k);
+    x.col(k) = state.positions.row(node).transpose();
+    t.col(k) = state.Director(node);
+  }
+  return BendingStrains(model.elements[e], x, t);
+}
+
 Eigen::Vector3d ProbePosition(const ShellModel& model,
                               const ProbePoint& probe,
                               const ShellState& state) {

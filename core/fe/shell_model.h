@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -83,6 +84,12 @@ ShellModel BuildShellModel(const Scene& scene, Mesh mesh);
 bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta);
 
 // Position of a probe in a state: Σ N_I(ξ, η) φ_I over its element.
+// The bending strains of element `e` in `state` at its four Gauss points,
+// in the material frame (BendingStrains on the element's nodes).
+std::array<Eigen::Vector3d, 4> ElementBendingStrains(const ShellModel& model,
+                                                     const ShellState& state,
+                                                     int e);
+
 Eigen::Vector3d ProbePosition(const ShellModel& model,
                               const ProbePoint& probe,
                               const ShellState& state);

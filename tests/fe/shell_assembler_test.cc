@@ -49,6 +49,18 @@ Scene Sheet(int nx, int ny, double poisson = 0.3) {
   return scene;
 }
 
+// Element e's nodes in `state`, as the assembler hands them to the element.
+ShellElementState ElementStateOf(const ShellModel& model, const ShellState& state, int e) {
+  ShellElementState element;
+  for (int k = 0; k < 4; ++k) {
+    const int node = model.mesh.quads(e, k);
+    element.positions.col(k) = state.positions.row(node).transpose();
+    element.directors.col(k) = state.Director(node);
+    element.director_tangents[k] = DirectorTangent(state.rotations[node]);
+  }
+  return element;
+}
+
 // The reference sheet moved by a large rigid rotation, its nodes shifted by
 // up to 2 % of the side and each node turned by up to 0.6 rad more: every
 // membrane, bending and shear term is active.
@@ -369,13 +381,7 @@ TEST(ShellAssembler, ParallelAssemblyEqualsTheSerialSumOfTheElements) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.DofCount());
   std::vector<Eigen::Triplet<double>> entries;
   for (int e = 0; e < model.mesh.ElementCount(); ++e) {
-    ShellElementState element;
-    for (int k = 0; k < 4; ++k) {
-      const int node = model.mesh.quads(e, k);
-      element.positions.col(k) = state.positions.row(node).transpose();
-      element.directors.col(k) = state.Director(node);
-      element.director_tangents[k] = DirectorTangent(state.rotations[node]);
-    }
+    const ShellElementState element = ElementStateOf(model, state, e);
     ElementEnergy result;
     EvaluateShellElement(
         model.elements[e], model.section, element, ElementOutput::kHessian, result);
@@ -424,13 +430,7 @@ TEST(ShellAssembler, EachElementBendsWithItsOwnSlip) {
   const double energy = assembler.Assemble(state, internal, nullptr);
   double sum = 0;
   for (int e = 0; e < model.mesh.ElementCount(); ++e) {
-    ShellElementState element;
-    for (int k = 0; k < 4; ++k) {
-      const int node = model.mesh.quads(e, k);
-      element.positions.col(k) = state.positions.row(node).transpose();
-      element.directors.col(k) = state.Director(node);
-      element.director_tangents[k] = DirectorTangent(state.rotations[node]);
-    }
+    const ShellElementState element = ElementStateOf(model, state, e);
     ElementEnergy result;
     EvaluateShellElement(model.elements[e],
                          model.section,

@@ -88,5 +88,47 @@ TEST(MeshSequencing, ProlongationReproducesBilinearFieldsAndKeepsHeldNodes) {
   }
 }
 
+// Bending hysteresis's history goes with the state: each fine element takes
+// the slip of the coarse element under its centre, that element's Gauss
+// points' mean per friction family. Here a coarse element's slip is its own
+// centre (x, y) and the family plus a tenth of the Gauss point's number, so
+// the expected value is the centre of the coarse cell the fine centre lies in.
+TEST(MeshSequencing, ProlongationCarriesTheBendingSlipOfTheCoarseElementBelow) {
+  const Scene fine_scene = Sheet(12, 6);
+  const ShellModel fine = BuildShellModel(fine_scene);
+  const ShellModel coarse = BuildShellModel(CoarsenedScene(fine_scene, 3));  // 4 × 2
+  auto centre = [](const ShellModel& m, int e) {
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (int k = 0; k < 4; ++k) c += 0.25 * m.mesh.positions.row(m.mesh.quads(e, k)).head<2>();
+    return c;
+  };
+  ShellState state = coarse.reference;
+  for (int e = 0; e < coarse.mesh.ElementCount(); ++e) {
+    ElementSlip slip;
+    for (int p = 0; p < 4; ++p)
+      for (int f = 0; f < 2; ++f) slip.col(2 * p + f) << centre(coarse, e), f + 0.1 * p;
+    state.bending_slip.push_back(slip);
+  }
+  const ShellState out = Prolongate(coarse, state, fine);
+  ASSERT_EQ(out.bending_slip.size(), static_cast<size_t>(fine.mesh.ElementCount()));
+  const Eigen::Vector2d lo = fine.mesh.positions.leftCols<2>().colwise().minCoeff();
+  const Eigen::Vector2d hi = fine.mesh.positions.leftCols<2>().colwise().maxCoeff();
+  const Eigen::Vector2d cell = (hi - lo).cwiseQuotient(Eigen::Vector2d(4, 2));
+  for (int e = 0; e < fine.mesh.ElementCount(); ++e) {
+    const Eigen::Vector2d c = centre(fine, e);
+    const Eigen::Vector2d below(
+        lo.x() + (std::floor((c.x() - lo.x()) / cell.x()) + 0.5) * cell.x(),
+        lo.y() + (std::floor((c.y() - lo.y()) / cell.y()) + 0.5) * cell.y());
+    for (int p = 0; p < 4; ++p)
+      for (int f = 0; f < 2; ++f) {
+        const Eigen::Vector3d expected(below.x(), below.y(), f + 0.15);
+        EXPECT_LT((out.bending_slip[e].col(2 * p + f) - expected).norm(), 1e-12)
+            << "element " << e << ", Gauss point " << p << ", family " << f;
+      }
+  }
+  state.bending_slip.clear();
+  EXPECT_TRUE(Prolongate(coarse, state, fine).bending_slip.empty());
+}
+
 }  // namespace
 }  // namespace drape

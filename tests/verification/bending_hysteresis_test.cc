@@ -229,12 +229,7 @@ EngineRun RunEngine(double w, double b, double two_hb, double length, int elemen
   run.largest_over_stick = 0;
   run.root_over_stick = INFINITY;
   for (int e = 0; e < model.mesh.ElementCount(); ++e) {
-    NodeColumns x, t;
-    for (int k = 0; k < 4; ++k) {
-      x.col(k) = last.positions.row(model.mesh.quads(e, k)).transpose();
-      t.col(k) = last.Director(model.mesh.quads(e, k));
-    }
-    const auto kappa = BendingStrains(model.elements[e], x, t);
+    const auto kappa = ElementBendingStrains(model, last, e);
     for (int p = 0; p < 4; ++p) {
       const Eigen::Vector3d d = kappa[p] - last.bending_slip[e].col(2 * p);
       const double r = std::sqrt(d(0) * d(0) + d(1) * d(1) + 0.5 * d(2) * d(2)) / stick;
