@@ -2,14 +2,16 @@
 // of nodes, a random SPD 20 × 20 block per 4-node element. The SPD case takes
 // the supernodal LLᵀ; the indefinite case (the same matrix minus σI) fails it
 // and takes the simplicial LDLᵀ fallback with refined solves, so its time
-// includes the failed LLᵀ. The second argument is the path: 0 kAuto (what
-// the solver uses), 1 kLltFirst, 2 kLdltOnly — to place kAuto's threshold.
+// includes the failed LLᵀ. The arguments are the grid's nodes each way and
+// the path: 0 kAuto (what the solver uses), 1 kLltFirst, 2 kLdltOnly, 3 kBand
+// — to place kAuto's thresholds.
 // Times are wall-clock (BLAS may use threads).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/SparseCore>
 
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "core/linalg/sparse_cholesky.h"
@@ -17,10 +19,10 @@
 namespace drape {
 namespace {
 
-Eigen::SparseMatrix<double> ShellLike(int nodes_per_side, double sigma) {
+Eigen::SparseMatrix<double> ShellLike(int nx, int ny, double sigma) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const int nx = nodes_per_side, ny = nodes_per_side, n = 5 * nx * ny;
+  const int n = 5 * nx * ny;
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(static_cast<size_t>(nx - 1) * (ny - 1) * 210 + n);
   for (int j = 0; j + 1 < ny; ++j)
@@ -47,9 +49,10 @@ Eigen::SparseMatrix<double> ShellLike(int nodes_per_side, double sigma) {
 
 // σ = 0 (SPD) or 2 (a handful of eigenvalues below it: 4 to 7 at these sizes).
 void FactorizeSolve(benchmark::State& state, double sigma) {
-  const Eigen::SparseMatrix<double> k = ShellLike(static_cast<int>(state.range(0)), sigma);
+  const Eigen::SparseMatrix<double> k =
+      ShellLike(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), sigma);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(k.rows());
-  SparseCholesky chol(static_cast<FactorizationPath>(state.range(1)));
+  SparseCholesky chol(static_cast<FactorizationPath>(state.range(2)));
   chol.Analyze(k);
   FactorizationInfo info;
   for (auto _ : state) {
@@ -59,6 +62,7 @@ void FactorizeSolve(benchmark::State& state, double sigma) {
   state.counters["dofs"] = static_cast<double>(k.rows());
   state.counters["negative_pivots"] = info.negative_pivots;
   state.counters["ldlt"] = info.used_ldlt;
+  state.counters["band"] = info.used_band;
 }
 
 void BM_FactorizeSolveSpd(benchmark::State& state) {
@@ -69,7 +73,8 @@ void BM_FactorizeSolveIndefinite(benchmark::State& state) {
 }
 
 void BM_Analyze(benchmark::State& state) {
-  const Eigen::SparseMatrix<double> k = ShellLike(static_cast<int>(state.range(0)), 0.0);
+  const Eigen::SparseMatrix<double> k =
+      ShellLike(static_cast<int>(state.range(0)), static_cast<int>(state.range(0)), 0.0);
   for (auto _ : state) {
     SparseCholesky chol;
     chol.Analyze(k);
@@ -77,10 +82,12 @@ void BM_Analyze(benchmark::State& state) {
   state.counters["dofs"] = static_cast<double>(k.rows());
 }
 
+// Nodes x × y: the strip fold's 81 × 3 and 81 × 2, square sheets.
 void SizesAndPaths(benchmark::internal::Benchmark* b) {
-  for (int n : {10, 20, 30, 50, 100})
-    for (int path : {0, 1, 2}) b->Args({n, path});
-  b->ArgNames({"n", "path"})->Unit(benchmark::kMillisecond)->UseRealTime();
+  for (auto [nx, ny] :
+       {std::pair{81, 2}, {81, 3}, {161, 3}, {10, 10}, {21, 21}, {31, 31}, {51, 51}, {100, 100}})
+    for (int path : {0, 1, 2, 3}) b->Args({nx, ny, path});
+  b->ArgNames({"x", "y", "path"})->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 BENCHMARK(BM_FactorizeSolveSpd)->Apply(SizesAndPaths);
 BENCHMARK(BM_FactorizeSolveIndefinite)->Apply(SizesAndPaths);

@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "core/linalg/band_ldlt.h"
+#include "core/linalg/band_ordering.h"
+
 // Zero pivots. Pivots are judged against the scale of their own row: with
 // s_i the power of two for which s_i²·|K_ii| lies in [1/2, 2) (for a zero
 // diagonal, the row's largest |K_ij| stands in for |K_ii|; an empty row gets
@@ -53,6 +56,28 @@ constexpr double kRefinementTolerance = 1e-14;
 // the two paths take the same time for a definite matrix; at 12 500 (2.6e8)
 // the supernodal LLᵀ is twice as fast.
 constexpr double kLdltOnlyFlops = 1e6;
+// The band LDLᵀ (band_ldlt.h) on the narrowest of a few bandwidth-reducing
+// orderings: its dense kernels beat CHOLMOD's simplicial LDLᵀ at every size
+// measured, and the supernodal LLᵀ on small matrices, for at most
+// kBandWorkRatio times the LLᵀ's flops (bench/sparse_cholesky_benchmark.cc,
+// shell-like matrices; ms per factorisation and solve, LLᵀ / simplicial
+// LDLᵀ / band): strip 81 × 3 nodes 0.83 / 0.44 / 0.23; 21 × 21 nodes 3.4 /
+// 6.3 / 1.5; 51 × 51 36 / 125 / 31; 100 × 100 265 / 1 300 / 367. So:
+// below kBandFirstFlops (the LLᵀ's) the band serves every factorisation, in
+// one pass with the inertia; above, the LLᵀ comes first and the band is the
+// indefinite fallback up to kBandFallbackFlops of its own (200 × 200 would
+// take 2e11 and 1.7 GB).
+constexpr double kBandFirstFlops = 5e8;
+constexpr double kBandWorkRatio = 4;
+constexpr double kBandFallbackFlops = 3e10;
+// A band pivot this close to the zero-pivot bound (in units of the bound) is
+// not trusted: the matrix is factorised again by CHOLMOD's simplicial LDLᵀ,
+// whose verdict stands. A band ordering's last pivots gather more roundoff
+// than a fill-reducing one's: the pivot that should be zero in singular
+// shell-like matrices came out at up to 2·n·ε (CHOLMOD's: 0.07·n·ε), while
+// genuine pivots of a fabric tangent stay above 1e-8 (n·ε ≈ 2.5e-13 for a
+// strip, 5e-13 for a 20 × 20 sheet).
+constexpr double kBandSuspectPivot = 64;
 // Below this many flops per factorisation the BLAS runs on one thread.
 constexpr double kThreadedBlasFlops = 1e9;
 
@@ -230,7 +255,10 @@ bool PivotsAboveBound(const cholmod_factor& f, const Eigen::VectorXd& scale, dou
 }  // namespace
 
 struct SparseCholesky::Impl {
-  enum class Active { kNone, kLLt, kLDLt };
+  // kDelegated: another factorisation decided (`delegate`): the simplicial
+  // LDLᵀ where the band's verdict was near a zero pivot, or the band LDLᵀ in
+  // its own ordering after an LLᵀ found the matrix indefinite.
+  enum class Active { kNone, kLLt, kLDLt, kBand, kDelegated };
 
   // Two commons, each with fixed settings: supernodal LLᵀ, and the simplicial
   // LDLᵀ fallback analysed with the LLᵀ's permutation.
@@ -238,6 +266,12 @@ struct SparseCholesky::Impl {
   cholmod_common ldl;
   cholmod_factor* ll_factor = nullptr;
   cholmod_factor* ldl_factor = nullptr;  // analysed on the first fallback
+  std::unique_ptr<BandLdlt> band;        // instead of both, for narrow bands
+  // Analysed on first need: the simplicial LDLᵀ behind the band, or the
+  // band LDLᵀ behind the LLᵀ.
+  std::unique_ptr<SparseCholesky> careful, band_fallback;
+  bool band_fallback_pays = false;
+  const SparseCholesky* delegate = nullptr;
 
   int n = -1;                     // -1: not analysed
   bool ldlt_only = false;         // small factorisations: skip the LLᵀ attempt
@@ -293,7 +327,12 @@ struct SparseCholesky::Impl {
     perm.assign(p, p + n);
     const double flops = c.fl;
     cholmod_free_factor(&symbolic, &c);
+    PermutePattern();
+    return flops;
+  }
 
+  // `permuted`'s pattern and `slot` for the ordering `perm`.
+  void PermutePattern() {
     std::vector<int> inverse(n);
     for (int r = 0; r < n; ++r) inverse[perm[r]] = r;
     // Entry k of K lands at (row, col) = sorted (inverse[i], inverse[j]);
@@ -324,7 +363,6 @@ struct SparseCholesky::Impl {
     std::copy(p_outer.begin(), p_outer.end(), permuted.outerIndexPtr());
     std::copy(p_inner.begin(), p_inner.end(), permuted.innerIndexPtr());
     permuted.coeffs().setZero();
-    return flops;
   }
 
   // permuted = P K Pᵀ for K with the analysed pattern.
@@ -344,6 +382,11 @@ struct SparseCholesky::Impl {
   void FreeFactors() {
     if (ll_factor) cholmod_free_factor(&ll_factor, &ll);
     if (ldl_factor) cholmod_free_factor(&ldl_factor, &ldl);
+    band.reset();
+    careful.reset();
+    band_fallback.reset();
+    band_fallback_pays = false;
+    delegate = nullptr;
     active = Active::kNone;
   }
 
@@ -365,6 +408,47 @@ struct SparseCholesky::Impl {
       for (int q = p[j]; q < p[j + 1]; ++q) y[q] = scale[i[q]] * x[q] * scale[j];
   }
 
+  // Whether the band LDLᵀ serves every factorisation: always under kBand;
+  // under kAuto when the LLᵀ is small and the band's work within
+  // kBandWorkRatio of it. Then `perm` is the band's ordering and `band` the
+  // factor. Otherwise, under kAuto, whether it pays as the indefinite
+  // fallback (`band_fallback_pays`).
+  bool ChooseBand(const Eigen::SparseMatrix<double>& upper,
+                  FactorizationPath path,
+                  double memory_limit) {
+    if (path != FactorizationPath::kBand && path != FactorizationPath::kAuto) return false;
+    std::vector<int> order = NarrowBandOrdering(upper);
+    const int width = HalfBandwidth(upper, order);
+    const double work = BandLdlt::Flops(n, width);
+    if (path == FactorizationPath::kAuto &&
+        !(flops < kBandFirstFlops && work <= kBandWorkRatio * flops)) {
+      band_fallback_pays =
+          work <= kBandFallbackFlops && BandLdlt::Bytes(n, width) < memory_limit / 2;
+      return false;
+    }
+    perm = std::move(order);
+    PermutePattern();
+    band = std::make_unique<BandLdlt>(n, width);
+    return true;
+  }
+
+  // The factorisation by `solver` (analysed on first use with `path`), as
+  // this one's verdict.
+  FactorizationInfo Delegate(std::unique_ptr<SparseCholesky>& solver,
+                             FactorizationPath path,
+                             const Eigen::SparseMatrix<double>& upper,
+                             double memory_limit) {
+    if (!solver) {
+      solver = std::make_unique<SparseCholesky>(path);
+      solver->SetMemoryLimit(memory_limit);
+      solver->Analyze(upper);
+    }
+    const FactorizationInfo info = solver->Factorize(upper);
+    delegate = solver.get();
+    active = Active::kDelegated;
+    return info;
+  }
+
   void AnalyzeLdlt(cholmod_sparse& a) {
     ldl_factor = cholmod_analyze(&a, &ldl);
     ThrowOnError(ldl, "analyze (LDLᵀ)");
@@ -373,6 +457,7 @@ struct SparseCholesky::Impl {
 
   // y = F⁻¹ b with the factor F of the active path; `c` is the caller's own.
   Eigen::VectorXd FactorSolve(const Eigen::VectorXd& b, cholmod_common& c) const {
+    if (active == Active::kBand) return band->Solve(b);
     cholmod_factor* f = active == Active::kLLt ? ll_factor : ldl_factor;
     cholmod_dense rhs = View(b);
     cholmod_dense* y = cholmod_solve(CHOLMOD_A, f, &rhs, &c);
@@ -415,17 +500,24 @@ void SparseCholesky::Analyze(const Eigen::SparseMatrix<double>& upper) {
   m.n = n;
   try {
     m.flops = m.Order(upper);
-    m.ldlt_only = path_ == FactorizationPath::kLdltOnly ||
-                  (path_ == FactorizationPath::kAuto && m.flops < kLdltOnlyFlops);
-    cholmod_sparse a = View(m.permuted);
-    m.ll_factor = cholmod_analyze(&a, &m.ll);
-    ThrowOnError(m.ll, "analyze");
-    if (!m.ll_factor) throw std::runtime_error("SparseCholesky: CHOLMOD analyze failed");
-    // Values and row indices of L (a supernodal factor stores its padded
-    // blocks), before any of it is allocated.
-    const double nonzeros = m.ll.lnz;
-    factor_bytes_ = std::max(12 * nonzeros, m.ll_factor->is_super ? 8.0 * m.ll_factor->xsize : 0.0);
+    double nonzeros = 0;
     const double limit = memory_limit_ > 0 ? memory_limit_ : AvailableMemoryBytes();
+    if (m.ChooseBand(upper, path_, limit)) {
+      nonzeros = static_cast<double>(n) * (m.band->band() + 1);
+      factor_bytes_ = m.band->Bytes();
+    } else {
+      m.ldlt_only = path_ == FactorizationPath::kLdltOnly ||
+                    (path_ == FactorizationPath::kAuto && m.flops < kLdltOnlyFlops);
+      cholmod_sparse a = View(m.permuted);
+      m.ll_factor = cholmod_analyze(&a, &m.ll);
+      ThrowOnError(m.ll, "analyze");
+      if (!m.ll_factor) throw std::runtime_error("SparseCholesky: CHOLMOD analyze failed");
+      // Values and row indices of L (a supernodal factor stores its padded
+      // blocks), before any of it is allocated.
+      nonzeros = m.ll.lnz;
+      factor_bytes_ =
+          std::max(12 * nonzeros, m.ll_factor->is_super ? 8.0 * m.ll_factor->xsize : 0.0);
+    }
     if (factor_bytes_ > limit) {
       char message[320];
       std::snprintf(message,
@@ -461,6 +553,19 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
   RowScales(m.permuted, m.scale);  // throws for a non-finite entry
   const double bound = std::max(1, m.n) * std::numeric_limits<double>::epsilon();
 
+  if (m.band) {
+    m.Scale(m.permuted);
+    const BandLdlt::Inertia inertia = m.band->Factorize(m.scaled, bound);
+    if (inertia.zero > 0 || inertia.smallest <= kBandSuspectPivot * bound)
+      return info_ = m.Delegate(m.careful, FactorizationPath::kLdltOnly, upper, memory_limit_);
+    m.active = Impl::Active::kBand;
+    info_.used_ldlt = true;
+    info_.used_band = true;
+    info_.negative_pivots = inertia.negative;
+    info_.zero_pivots = inertia.zero;
+    info_.positive_definite = inertia.negative == 0 && inertia.zero == 0;
+    return info_;
+  }
   UseBlasThreads(m.flops >= kThreadedBlasFlops);
   // Supernodal LLᵀ: the positive-definiteness test and the fast path.
   cholmod_sparse a = View(m.permuted);
@@ -481,6 +586,11 @@ FactorizationInfo SparseCholesky::Factorize(const Eigen::SparseMatrix<double>& u
     return info_;
   }
 
+  if (m.band_fallback_pays) {
+    info_ = m.Delegate(m.band_fallback, FactorizationPath::kBand, upper, memory_limit_);
+    m.last_indefinite = !info_.positive_definite;
+    return info_;
+  }
   // Simplicial LDLᵀ of S K S for the inertia, in the same ordering.
   m.Scale(m.permuted);
   cholmod_sparse s = View(m.scaled);
@@ -523,6 +633,7 @@ Eigen::VectorXd SparseCholesky::Solve(const Eigen::VectorXd& b) const {
                                 std::to_string(b.size()) + ", matrix of size " +
                                 std::to_string(m.n));
 
+  if (m.active == Impl::Active::kDelegated) return m.delegate->Solve(b);
   // A common of its own: Solve changes nothing shared, so const Solves may run
   // concurrently.
   ScopedCommon scoped;

@@ -6,7 +6,9 @@
 // simplicial LDLᵀ gives the inertia: the number of negative pivots, the
 // stability indicator of the path following (a change means a limit or
 // bifurcation point was crossed). Small matrices, where the supernodal path
-// does not pay, go straight to the LDLᵀ.
+// does not pay, go straight to an LDLᵀ: a dense-kernel band LDLᵀ
+// (band_ldlt.h) on a reverse Cuthill–McKee ordering where the band is narrow
+// (strips, small sheets), CHOLMOD's simplicial one otherwise.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -22,6 +24,7 @@ struct FactorizationInfo {
   int negative_pivots = -1;  // 0 when positive definite
   int zero_pivots = 0;       // pivots below the dbound in magnitude (singular)
   bool used_ldlt = false;
+  bool used_band = false;  // the band LDLᵀ (band_ldlt.h) gave the verdict
 };
 
 enum class FactorizationPath {
@@ -29,6 +32,7 @@ enum class FactorizationPath {
               // last factorisation was indefinite
   kLltFirst,  // supernodal LLᵀ, LDLᵀ when it is not positive definite
   kLdltOnly,  // simplicial LDLᵀ always
+  kBand,      // banded LDLᵀ on a reverse Cuthill–McKee ordering always
 };
 
 class SparseCholesky {

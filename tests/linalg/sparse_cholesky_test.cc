@@ -100,15 +100,17 @@ TEST(SparseCholesky, InertiaDoesNotDependOnUnits) {
     const SparseMatrix k = Laplacian2D(nx, ny, sigma);
     const Eigen::VectorXd s = RandomScales(n, 6.0, rng);
     const SparseMatrix scaled = ScaleSymmetric(k, s);
-    SparseCholesky chol(FactorizationPath::kLltFirst);
-    chol.Analyze(scaled);
-    const FactorizationInfo info = chol.Factorize(scaled);
-    EXPECT_EQ(info.negative_pivots, m);
-    EXPECT_EQ(info.zero_pivots, 0);
-    EXPECT_EQ(info.positive_definite, m == 0);
-    const Eigen::VectorXd b = RandomVector(n, rng);
-    const Eigen::VectorXd x = s.cwiseProduct(chol.Solve(s.cwiseProduct(b)));
-    EXPECT_LT(RelativeResidual(k, x, b), 1e-10);
+    for (FactorizationPath path : {FactorizationPath::kLltFirst, FactorizationPath::kBand}) {
+      SparseCholesky chol(path);
+      chol.Analyze(scaled);
+      const FactorizationInfo info = chol.Factorize(scaled);
+      EXPECT_EQ(info.negative_pivots, m);
+      EXPECT_EQ(info.zero_pivots, 0);
+      EXPECT_EQ(info.positive_definite, m == 0);
+      const Eigen::VectorXd b = RandomVector(n, rng);
+      const Eigen::VectorXd x = s.cwiseProduct(chol.Solve(s.cwiseProduct(b)));
+      EXPECT_LT(RelativeResidual(k, x, b), 1e-10);
+    }
   }
 }
 
@@ -168,12 +170,13 @@ TEST(SparseCholesky, ShellLikeBlockMatrixInertia) {
   }
 }
 
-TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
+// Each path applies the same zero-pivot rule.
+void ExpectZeroPivotsOfSingularMatrices(FactorizationPath path) {
   std::mt19937_64 rng(10);
   // Neumann Laplacians: positive semidefinite, one zero eigenvalue.
   for (int n : {2, 50, 1000, 5000}) {
     SCOPED_TRACE(testing::Message() << "1-D Neumann, n = " << n);
-    SparseCholesky chol(FactorizationPath::kLltFirst);
+    SparseCholesky chol(path);
     const SparseMatrix k = Laplacian1D(n, 0.0, true);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
@@ -188,7 +191,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     const SparseMatrix k = Laplacian2D(nx, ny, 0.0, true);
     for (double units : {0.0, 5.0}) {
       const SparseMatrix scaled = ScaleSymmetric(k, RandomScales(nx * ny, units, rng));
-      SparseCholesky chol(FactorizationPath::kLltFirst);
+      SparseCholesky chol(path);
       chol.Analyze(scaled);
       const FactorizationInfo info = chol.Factorize(scaled);
       EXPECT_EQ(info.zero_pivots, 1);
@@ -206,7 +209,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     for (int i = 0; i < n; ++i) s[i] = i % 5 < 3 ? 1.0 : 1e-3;
     for (const SparseMatrix& matrix : {k, ScaleSymmetric(k, s)}) {
       SCOPED_TRACE(testing::Message() << "shell-like " << nx << " x " << ny);
-      SparseCholesky chol(FactorizationPath::kLltFirst);
+      SparseCholesky chol(path);
       chol.Analyze(matrix);
       const FactorizationInfo info = chol.Factorize(matrix);
       EXPECT_FALSE(info.positive_definite);
@@ -225,7 +228,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     if (stored) t.emplace_back(zero, zero, 0.0);
     AddLaplacian1D(zero + 1, n - zero - 1, 0.0, false, t);
     const SparseMatrix k = Upper(n, t);
-    SparseCholesky chol(FactorizationPath::kLltFirst);
+    SparseCholesky chol(path);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_FALSE(info.positive_definite);
@@ -244,7 +247,7 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
       if (i + 1 < 60) t.emplace_back(80 + i, 81 + i, 1.0);
     }
     const SparseMatrix k = Upper(140, t);
-    SparseCholesky chol(FactorizationPath::kLltFirst);
+    SparseCholesky chol(path);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_EQ(info.zero_pivots, 1);
@@ -256,12 +259,20 @@ TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
     Triplets t;
     for (int i = 0; i < 10; ++i) t.emplace_back(i, i, 0.0);
     const SparseMatrix k = Upper(10, t);
-    SparseCholesky chol(FactorizationPath::kLltFirst);
+    SparseCholesky chol(path);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_EQ(info.zero_pivots, 10);
     EXPECT_EQ(info.negative_pivots, 0);
   }
+}
+
+TEST(SparseCholesky, SingularMatricesReportZeroPivots) {
+  ExpectZeroPivotsOfSingularMatrices(FactorizationPath::kLltFirst);
+}
+
+TEST(SparseCholesky, SingularMatricesReportZeroPivotsOnTheBandPath) {
+  ExpectZeroPivotsOfSingularMatrices(FactorizationPath::kBand);
 }
 
 }  // namespace

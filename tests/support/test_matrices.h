@@ -198,20 +198,23 @@ inline std::vector<double> DenseEigenvalues(const SparseMatrix& upper) {
   return std::vector<double>(ev.data(), ev.data() + ev.size());
 }
 
-// Analyse, factorise and check the inertia and the solve, by both paths.
+// Analyse, factorise and check the inertia and the solve, by every path.
 inline void ExpectInertia(const SparseMatrix& k,
                           int negative,
                           double tolerance,
                           std::mt19937_64& rng) {
-  for (FactorizationPath path : {FactorizationPath::kLltFirst, FactorizationPath::kLdltOnly}) {
-    SCOPED_TRACE(path == FactorizationPath::kLltFirst ? "LLT first" : "LDLT only");
+  for (FactorizationPath path :
+       {FactorizationPath::kLltFirst, FactorizationPath::kLdltOnly, FactorizationPath::kBand}) {
+    SCOPED_TRACE(path == FactorizationPath::kLltFirst   ? "LLT first"
+                 : path == FactorizationPath::kLdltOnly ? "LDLT only"
+                                                        : "band");
     SparseCholesky chol(path);
     chol.Analyze(k);
     const FactorizationInfo info = chol.Factorize(k);
     EXPECT_EQ(info.negative_pivots, negative);
     EXPECT_EQ(info.zero_pivots, 0);
     EXPECT_EQ(info.positive_definite, negative == 0);
-    EXPECT_EQ(info.used_ldlt, path == FactorizationPath::kLdltOnly || negative != 0);
+    EXPECT_EQ(info.used_ldlt, path != FactorizationPath::kLltFirst || negative != 0);
     const Eigen::VectorXd b = RandomVector(static_cast<int>(k.rows()), rng);
     EXPECT_LT(RelativeResidual(k, chol.Solve(b), b), tolerance);
   }
