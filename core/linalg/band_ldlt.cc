@@ -105,21 +105,37 @@ BandLdlt::Inertia BandLdlt::Factorize(const Eigen::SparseMatrix<double>& upper, 
   return inertia;
 }
 
+// Panel by panel, as the factorisation: a small unit-triangular solve on the
+// panel's rows, then one matrix-vector product for the rows below it (each
+// row of x read once per panel, not once per column).
 Eigen::VectorXd BandLdlt::Solve(const Eigen::VectorXd& b) const {
   if (b.size() != n_)
-    throw std::invalid_argument("BandLdlt: a right-hand side of size " + std::to_string(b.size()) +
-                                " for a factor of order " + std::to_string(n_));
+    throw std::invalid_argument("BandLdlt: a right-hand side of size " +
+                                std::to_string(b.size()) + " for a factor of order " +
+                                std::to_string(n_));
+  using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Stride>;
   Eigen::VectorXd x = b;
-  for (int j = 0; j < n_; ++j) {
-    const int below = std::min(n_ - 1, j + band_) - j;
-    if (below > 0)
-      x.segment(j + 1, below) -= x[j] * Eigen::Map<const Eigen::VectorXd>(At(j + 1, j), below);
+  for (int first = 0; first < n_; first += block_) {
+    const int cols = std::min(n_, first + block_) - first;
+    const int rows = std::min(n_, first + cols + band_) - first - cols;
+    const ConstBlock l11(At(first, first), cols, cols, Stride(stride_));
+    l11.triangularView<Eigen::UnitLower>().solveInPlace(x.segment(first, cols));
+    if (rows > 0)
+      x.segment(first + cols, rows).noalias() -=
+          ConstBlock(At(first + cols, first), rows, cols, Stride(stride_)) *
+          x.segment(first, cols);
   }
   x.array() /= d_.array();
-  for (int j = n_ - 1; j >= 0; --j) {
-    const int below = std::min(n_ - 1, j + band_) - j;
-    if (below > 0)
-      x[j] -= Eigen::Map<const Eigen::VectorXd>(At(j + 1, j), below).dot(x.segment(j + 1, below));
+  const int last = ((n_ - 1) / block_) * block_;
+  for (int first = last; first >= 0; first -= block_) {
+    const int cols = std::min(n_, first + block_) - first;
+    const int rows = std::min(n_, first + cols + band_) - first - cols;
+    if (rows > 0)
+      x.segment(first, cols).noalias() -=
+          ConstBlock(At(first + cols, first), rows, cols, Stride(stride_)).transpose() *
+          x.segment(first + cols, rows);
+    const ConstBlock l11(At(first, first), cols, cols, Stride(stride_));
+    l11.triangularView<Eigen::UnitLower>().transpose().solveInPlace(x.segment(first, cols));
   }
   return x;
 }
