@@ -62,7 +62,14 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("max_iterations", s.max_iterations, 1);
   count("max_step_cuts", s.max_step_cuts, 0);
   count("max_turns", s.max_turns, 0);
-  count("sequencing", s.sequencing, 1);
+  if (auto q = c.Find("sequencing")) {
+    if (q->value().is_string()) {
+      if (q->String() != "auto") q->Fail("must be \"auto\" or an integer ≥ 1 (1: off)");
+      s.sequencing = kAutoSequencing;
+    } else {
+      count("sequencing", s.sequencing, 1);
+    }
+  }
   if (auto a = c.Find("acceleration")) s.acceleration = a->Boolean();
   if (auto e = c.Find("error_estimate")) s.error_estimate = e->Boolean();
   if (auto p = c.Find("psi")) s.psi = p->PositiveQuantity(dim::kLength);

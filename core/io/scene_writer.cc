@@ -204,7 +204,7 @@ json ToJson(const SolverSettings& s) {
                 {"max_turns", s.max_turns},
                 {"branching", ToString(s.branching)}});
   if (s.psi) j["psi"] = *s.psi;
-  if (s.sequencing > 1) j["sequencing"] = s.sequencing;
+  if (s.sequencing != kAutoSequencing) j["sequencing"] = s.sequencing;
   if (s.max_wall_s) j["max_wall_s"] = *s.max_wall_s;
   if (s.error_estimate) j["error_estimate"] = true;
   return j;

@@ -305,6 +305,8 @@ enum class Branching {
 // Named accuracy settings (core/model/solver_preset.h).
 enum class SolverPreset { kDraft, kBalanced, kAccurate };
 
+inline constexpr int kAutoSequencing = 0;
+
 struct SolverSettings {
   // The preset the settings were based on; keys given beside it override it.
   std::optional<SolverPreset> preset;
@@ -324,8 +326,9 @@ struct SolverSettings {
   std::optional<double> psi;  // [m]; default: a characteristic length of the part
   Branching branching = Branching::kStable;
   // > 1: follow the path on the mesh this many times coarser in each
-  // direction, then solve the scene's mesh from its end (mesh sequencing).
-  int sequencing = 1;
+  // direction, then solve the scene's mesh from its end (mesh sequencing);
+  // 1: off; kAutoSequencing: chosen by AutoSequencing (sequencing_check.h).
+  int sequencing = kAutoSequencing;
   // Wall-clock limit of a run [s]: past it the run stops (failed), keeping
   // every converged step. Absent: none.
   std::optional<double> max_wall_s;

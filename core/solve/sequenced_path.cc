@@ -48,7 +48,10 @@ StageOutcome RunSequenced(SolveRun& run,
       run.summary.notes.push_back("on the coarse mesh: " + w);
   const auto [nx, ny] = *coarse_scene.fabric.mesh.elements;
   const std::string where =
-      Format("mesh sequencing: the path on %d x %d elements (%d steps, %d iterations, %.3g s)",
+      Format("mesh sequencing%s: the path on %d x %d elements (%d steps, %d iterations, %.3g s)",
+             run.options.sequencing_auto
+                 ? Format(" (solver.sequencing: auto chose %d)", run.options.sequencing).c_str()
+                 : "",
              nx,
              ny,
              path.steps,

@@ -81,9 +81,20 @@ void SummarizeCosts(SolveRun& run) {
 
 }  // namespace
 
+namespace {
+
+// `options` with `sequencing: auto` resolved for the scene on its solved mesh.
+SolverOptions WithSequencingChosen(const Scene& solved, SolverOptions options) {
+  options.sequencing_auto = options.sequencing == kAutoSequencing;
+  options.sequencing = ChosenSequencing(solved, options.sequencing);
+  return options;
+}
+
+}  // namespace
+
 struct ShellSolver::Impl {
   Impl(const Scene& scene, ShellModel model, const SolverOptions& options)
-      : run(scene, std::move(model), options) {}
+      : run(scene, std::move(model), WithSequencingChosen(scene, options)) {}
   SolveRun run;
 };
 
@@ -100,7 +111,7 @@ ShellSolver::ShellSolver(const Scene& scene, ShellModel model, const SolverOptio
                      "nothing holds the fabric: it is free to move as a rigid body; add a support "
                      "or a gripper");
   CheckHoldsDoNotConflict(scene, run.model);
-  CheckSequencing(run.scene, options.sequencing);
+  CheckSequencing(run.scene, run.options.sequencing);
 }
 
 ShellSolver::~ShellSolver() = default;

@@ -89,7 +89,11 @@ bool SolverOptions::IsValid(std::string* error) const {
                max_augmentation_iterations,
                "max_augmentation_iterations >= 0",
                error) &&
-         Check(sequencing >= 1, "sequencing", sequencing, "sequencing >= 1", error) &&
+         Check(sequencing >= 0,
+               "sequencing",
+               sequencing,
+               "sequencing >= 1, or 0 (kAutoSequencing)",
+               error) &&
          Check(threads >= 0, "threads", threads, "threads >= 0", error) &&
          Check(max_wall_s >= 0 && std::isfinite(max_wall_s),
                "max_wall_s",

@@ -52,8 +52,10 @@ struct SolverOptions {
   // At a bifurcation: switch to the branch a real part takes (kStable) or
   // follow the primary path (kFundamental, the paper's behaviour).
   Branching branching = Branching::kStable;
-  // > 1: mesh sequencing (core/solve/mesh_sequencing.h) with this factor.
+  // > 1: mesh sequencing (core/solve/mesh_sequencing.h) with this factor;
+  // kAutoSequencing: the solver chooses (AutoSequencing).
   int sequencing = 1;
+  bool sequencing_auto = false;  // set by the solver: `sequencing` was chosen by auto
   // Threads for element assembly; 0 uses OpenMP's default.
   int threads = 0;
   // Wall-clock limit of a run [s], pauses included; 0: none. Past it the run

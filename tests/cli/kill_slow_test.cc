@@ -170,6 +170,8 @@ TEST(KillRun, FiftyByFiftyDrapeKilledAtRandomMomentsLeavesAWholeFolder) {
   std::ifstream in(test::ScenesDir() / "block-drape.json");
   json doc = json::parse(in);
   doc["fabric"]["mesh"]["elements"] = {50, 50};
+  // The path on this mesh, step by step (auto would sequence it: one step).
+  doc["solver"]["sequencing"] = 1;
   const fs::path scene =
       fs::temp_directory_path() / ("drape-kill-drape-" + std::to_string(getpid()) + ".json");
   std::ofstream(scene) << doc.dump(1);

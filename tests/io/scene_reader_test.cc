@@ -53,6 +53,16 @@ TEST(SceneReader, SequencingMustDivideTheMeshOfOneWeightStage) {
   EXPECT_EQ(ErrorOf(doc),
             "solver.sequencing: 3 must divide the mesh's 8 × 4 elements and leave at least 2 "
             "each way");
+  doc["solver"]["sequencing"] = "auto";
+  EXPECT_EQ(SceneFromJson(doc).solver.sequencing, kAutoSequencing);
+  doc["solver"]["sequencing"] = "often";
+  EXPECT_EQ(ErrorOf(doc), "solver.sequencing: must be \"auto\" or an integer ≥ 1 (1: off)");
+  // Absent: auto, which the writer leaves out; off (1) is written.
+  doc["solver"].erase("sequencing");
+  EXPECT_EQ(SceneFromJson(doc).solver.sequencing, kAutoSequencing);
+  EXPECT_FALSE(SceneToJson(SceneFromJson(doc))["solver"].contains("sequencing"));
+  doc["solver"]["sequencing"] = 1;
+  EXPECT_EQ(SceneFromJson(SceneToJson(SceneFromJson(doc))).solver.sequencing, 1);
 }
 
 TEST(SceneReader, APresetIsABaseTheSolverKeysBesideItOverride) {

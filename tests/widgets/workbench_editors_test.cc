@@ -184,15 +184,23 @@ TEST_F(Widgets, SolverSettingsComeFromPresetsOrFields) {
   doc->undoStack()->undo();
   EXPECT_FALSE(doc->scene().solver.max_wall_s.has_value());
   EXPECT_EQ(panel->timeLimit()->text().toStdString(), "none");
-  // Mesh sequencing: the strip fold moves a gripper in three stages, so it
-  // is refused with the reader's message and the field goes back.
-  EXPECT_EQ(panel->sequencing()->text().toStdString(), "off");
+  // Mesh sequencing: the strip fold moves a gripper in three stages, so a
+  // factor is refused with the reader's message and the field goes back to
+  // auto (the default: off for this scene); off is an undoable choice.
+  EXPECT_EQ(panel->sequencing()->text().toStdString(), "auto");
   panel->sequencing()->setValue(2);
   emit panel->sequencing()->editingFinished();
-  EXPECT_EQ(doc->scene().solver.sequencing, 1);
-  EXPECT_EQ(panel->sequencing()->value(), 1);
+  EXPECT_EQ(doc->scene().solver.sequencing, kAutoSequencing);
+  EXPECT_EQ(panel->sequencing()->text().toStdString(), "auto");
   EXPECT_NE(panel->materialMessage().toStdString().find("solver.sequencing"), std::string::npos)
       << panel->materialMessage().toStdString();
+  panel->sequencing()->setValue(1);
+  EXPECT_EQ(panel->sequencing()->text().toStdString(), "off");
+  emit panel->sequencing()->editingFinished();
+  EXPECT_EQ(doc->scene().solver.sequencing, 1);
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene().solver.sequencing, kAutoSequencing);
+  EXPECT_EQ(panel->sequencing()->text().toStdString(), "auto");
   // What happens at a bifurcation: an undoable choice, shown back.
   QComboBox* branching = panel->branching();
   EXPECT_EQ(branching->currentData().toString().toStdString(), "stable");

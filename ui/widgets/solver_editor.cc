@@ -68,14 +68,43 @@ void SolverEditor::MakeLimits(QFormLayout* form) {
   form->addRow("time limit", time_limit_);
 }
 
+namespace {
+
+// solver.sequencing: 0 reads "auto", 1 "off", a factor its number.
+class SequencingSpinBox : public QSpinBox {
+ public:
+  using QSpinBox::QSpinBox;
+
+ protected:
+  QString textFromValue(int value) const override {
+    return value == kAutoSequencing ? "auto" : value == 1 ? "off" : QString::number(value);
+  }
+  int valueFromText(const QString& text) const override {
+    const QString word = text.trimmed();
+    if (word == "auto") return kAutoSequencing;
+    if (word == "off") return 1;
+    return word.toInt();
+  }
+  QValidator::State validate(QString& text, int& position) const override {
+    const QString word = text.trimmed();
+    for (const char* name : {"auto", "off"})
+      if (QString(name).startsWith(word))
+        return word == name ? QValidator::Acceptable : QValidator::Intermediate;
+    return QSpinBox::validate(text, position);
+  }
+};
+
+}  // namespace
+
 void SolverEditor::MakeChoices(QFormLayout* form) {
-  sequencing_ = new QSpinBox(this);
-  sequencing_->setRange(1, 20);
-  sequencing_->setSpecialValueText("off");
+  sequencing_ = new SequencingSpinBox(this);
+  sequencing_->setRange(kAutoSequencing, 20);
   sequencing_->setToolTip(
-      "Mesh sequencing for a one-stage drape: follow the path on a mesh this many times coarser "
-      "in each direction, then solve this mesh from its end in a few Newton iterations (the "
-      "result then has one step). Must divide the mesh's element counts");
+      "Mesh sequencing for a one-stage drape (solver.sequencing): follow the path on a mesh "
+      "this many times coarser in each direction, then solve this mesh from its end in a few "
+      "Newton iterations (the result then has one step). Must divide the mesh's element counts. "
+      "auto: on for one-stage drapes of 2500 elements or more, with the coarse mesh about 20 "
+      "elements across; off: the path on this mesh");
   form->addRow("coarse path, factor", sequencing_);
   branching_ = new QComboBox(this);
   branching_->addItem("take the stable branch, or snap", "stable");
@@ -130,7 +159,8 @@ void SolverEditor::ConnectNumbers() {
   });
   connect(sequencing_, &QSpinBox::editingFinished, this, [this] {
     const int n = sequencing_->value();
-    ApplyChecked(QString("mesh sequencing %1").arg(n), [n](Scene& s) { s.solver.sequencing = n; });
+    ApplyChecked(QString("mesh sequencing %1").arg(sequencing_->text()),
+                 [n](Scene& s) { s.solver.sequencing = n; });
   });
   connect(time_limit_, &QDoubleSpinBox::editingFinished, this, [this] {
     const double seconds = time_limit_->value();
