@@ -110,9 +110,8 @@ BandLdlt::Inertia BandLdlt::Factorize(const Eigen::SparseMatrix<double>& upper, 
 // row of x read once per panel, not once per column).
 Eigen::VectorXd BandLdlt::Solve(const Eigen::VectorXd& b) const {
   if (b.size() != n_)
-    throw std::invalid_argument("BandLdlt: a right-hand side of size " +
-                                std::to_string(b.size()) + " for a factor of order " +
-                                std::to_string(n_));
+    throw std::invalid_argument("BandLdlt: a right-hand side of size " + std::to_string(b.size()) +
+                                " for a factor of order " + std::to_string(n_));
   using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Stride>;
   Eigen::VectorXd x = b;
   for (int first = 0; first < n_; first += block_) {
@@ -122,8 +121,7 @@ Eigen::VectorXd BandLdlt::Solve(const Eigen::VectorXd& b) const {
     l11.triangularView<Eigen::UnitLower>().solveInPlace(x.segment(first, cols));
     if (rows > 0)
       x.segment(first + cols, rows).noalias() -=
-          ConstBlock(At(first + cols, first), rows, cols, Stride(stride_)) *
-          x.segment(first, cols);
+          ConstBlock(At(first + cols, first), rows, cols, Stride(stride_)) * x.segment(first, cols);
   }
   x.array() /= d_.array();
   const int last = ((n_ - 1) / block_) * block_;
