@@ -163,44 +163,6 @@ TEST(HeavyElastica, SequencedSolveEndsOnTheElastica) {
   EXPECT_LT((tips[1] - tips[0]).norm(), 1e-6);
 }
 
-// solver.sequencing: auto, the default, on a strip of 2 600 elements: the
-// path on 50 × 13 (the factor 2, named in the note), one step, at the
-// elastica, and where the path on the scene's own mesh ends.
-TEST(HeavyElastica, AutoSequencingFollowsALargeStripsPathOnACoarserMesh) {
-  const double alpha = 32;
-  test::StripSpec spec;
-  spec.width = 0.02;
-  Scene scene = test::HeavyStrip(spec, alpha, 0.01);
-  scene.fabric.mesh.elements = std::array<int, 2>{100, 26};
-  const ElasticaEnd exact = SolveHeavyElastica(alpha);
-  Eigen::Vector3d tips[2];
-  int steps[2] = {0, 0};
-  const int sequencing[2] = {kAutoSequencing, 1};
-  for (int k : {0, 1}) {
-    scene.solver.sequencing = sequencing[k];
-    ShellSolver solver(scene, SolverOptions::FromScene(scene.solver));
-    const SolveSummary summary = solver.Solve({[&](const StepState& s) {
-      tips[k] = Probe(s, "tip") / spec.length;
-      ++steps[k];
-      return StepDecision::kContinue;
-    }});
-    ASSERT_TRUE(summary.IsComplete()) << summary.FullReport();
-    EXPECT_LT(std::hypot(tips[k].x() - exact.x, tips[k].z() - exact.z), 0.005);
-    if (k == 0) {
-      EXPECT_EQ(steps[0], 1);
-      ASSERT_FALSE(summary.notes.empty());
-      EXPECT_NE(summary.notes.back().find(
-                    "(solver.sequencing: auto chose 2): the path on 50 x 13 elements"),
-                std::string::npos)
-          << summary.notes.back();
-    }
-  }
-  EXPECT_GT(steps[1], 1);
-  // Both end where Newton met ‖R‖/‖R₀‖ ≤ 1e-5 from different starts:
-  // measured 1.1e-6 L apart.
-  EXPECT_LT((tips[0] - tips[1]).norm(), 1e-5);
-}
-
 TEST(HeavyElastica, PeirceCantileverChordAngleAtBendingLengthHalfTheStrip) {
   // c = L/2 ⇔ α = (L/c)³ = 8.
   const double alpha = 8.0;
