@@ -79,10 +79,6 @@ void SummarizeCosts(SolveRun& run) {
   s.peak_memory_bytes = PeakMemoryBytes();
 }
 
-}  // namespace
-
-namespace {
-
 // `options` with `sequencing: auto` resolved for the scene on its solved mesh.
 SolverOptions WithSequencingChosen(const Scene& solved, SolverOptions options) {
   options.sequencing_auto = options.sequencing == kAutoSequencing;
