@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "core/mechanics/director.h"
+#include "core/fe/element_state.h"
 
 namespace drape {
 namespace {
@@ -99,13 +99,7 @@ double ShellAssembler::Assemble(const ShellState& state,
 #pragma omp parallel for schedule(static) reduction(+ : energy) if (count >= 64)
     for (int c = 0; c < count; ++c) {
       const int e = color[c];
-      ShellElementState element;
-      for (int k = 0; k < 4; ++k) {
-        const int node = mesh.quads(e, k);
-        element.positions.col(k) = state.positions.row(node).transpose();
-        element.directors.col(k) = state.rotations[node].col(2);
-        element.director_tangents[k] = DirectorTangent(state.rotations[node]);
-      }
+      const ShellElementState element = ElementStateOf(model_, state, e);
       ElementEnergy result;
       const ElementSlip* slip = state.bending_slip.empty() ? nullptr : &state.bending_slip[e];
       EvaluateShellElement(model_.elements[e], model_.section, element, output, result, slip);

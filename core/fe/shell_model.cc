@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/fe/edge_moments.h"
+#include "core/fe/element_state.h"
 #include "core/fe/material_section.h"
 #include "core/mechanics/bilinear_quad.h"
 #include "core/mechanics/director.h"
@@ -140,13 +141,8 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
 std::array<Eigen::Vector3d, 4> ElementBendingStrains(const ShellModel& model,
                                                      const ShellState& state,
                                                      int e) {
-  NodeColumns x, t;
-  for (int k = 0; k < 4; ++k) {
-    const int node = model.mesh.quads(e, k);
-    x.col(k) = state.positions.row(node).transpose();
-    t.col(k) = state.Director(node);
-  }
-  return BendingStrains(model.elements[e], x, t);
+  const ShellElementState element = ElementStateOf(model, state, e);
+  return BendingStrains(model.elements[e], element.positions, element.directors);
 }
 
 Eigen::Vector3d ProbePosition(const ShellModel& model,

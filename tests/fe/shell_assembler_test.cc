@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "core/fe/dof_map.h"
+#include "core/fe/element_state.h"
 #include "core/fe/shell_model.h"
 #include "core/mechanics/director.h"
 #include "support/random_element.h"
@@ -47,18 +48,6 @@ Scene Sheet(int nx, int ny, double poisson = 0.3) {
   scene.fabric.mesh.elements = std::array<int, 2>{nx, ny};
   scene.material.membrane = IsotropicMembrane{spec.youngs_modulus, poisson};
   return scene;
-}
-
-// Element e's nodes in `state`, as the assembler hands them to the element.
-ShellElementState ElementStateOf(const ShellModel& model, const ShellState& state, int e) {
-  ShellElementState element;
-  for (int k = 0; k < 4; ++k) {
-    const int node = model.mesh.quads(e, k);
-    element.positions.col(k) = state.positions.row(node).transpose();
-    element.directors.col(k) = state.Director(node);
-    element.director_tangents[k] = DirectorTangent(state.rotations[node]);
-  }
-  return element;
 }
 
 // The reference sheet moved by a large rigid rotation, its nodes shifted by
