@@ -13,6 +13,9 @@ DRAPE_PACKAGES=(
   nlohmann-json3-dev libcli11-dev
   # measurement: the shadow of a drape is a polygon union (Clipper)
   libpolyclipping-dev
+  # pattern pieces from apparel CAD (AAMA DXF), and the independent DXF
+  # writer the reader's tests check it against
+  libdxflib-dev python3-ezdxf
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # rendering (ui/render): VTK through X; ffmpeg encodes MP4/GIF (and its

@@ -29,6 +29,7 @@
 #include "core/model/mesh.h"
 
 #include "core/model/gmsh_api.h"
+#include "core/model/polygon_checks.h"
 
 #include <algorithm>
 #include <array>
@@ -92,46 +93,6 @@ void RequireFeasibleCount(const char* function, double area, double element_size
   }
 }
 
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
-double ShoelaceArea(const std::vector<Eigen::Vector2d>& outline) {
-  double twice = 0;
-  for (std::size_t i = 0; i < outline.size(); ++i)
-    twice += Cross(outline[i], outline[(i + 1) % outline.size()]);
-  return 0.5 * twice;
-}
-
-// Whether the closed segments pq and rs share a point. `zero` is the
-// magnitude below which an orientation (a cross product) counts as collinear.
-bool SegmentsTouch(const Eigen::Vector2d& p,
-                   const Eigen::Vector2d& q,
-                   const Eigen::Vector2d& r,
-                   const Eigen::Vector2d& s,
-                   double zero) {
-  auto orientation =
-      [zero](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-        const double o = Cross(b - a, c - a);
-        return o > zero ? 1 : (o < -zero ? -1 : 0);
-      };
-  auto within = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-    // c lies in the bounding box of ab (used when a, b, c are collinear).
-    return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) &&
-           std::min(a.y(), b.y()) <= c.y() && c.y() <= std::max(a.y(), b.y());
-  };
-  const int o1 = orientation(p, q, r);
-  const int o2 = orientation(p, q, s);
-  const int o3 = orientation(r, s, p);
-  const int o4 = orientation(r, s, q);
-  if (o1 != o2 && o3 != o4) return true;
-  if (o1 == 0 && within(p, q, r)) return true;
-  if (o2 == 0 && within(p, q, s)) return true;
-  if (o3 == 0 && within(r, s, p)) return true;
-  if (o4 == 0 && within(r, s, q)) return true;
-  return false;
-}
-
 std::string Edge(std::size_t i, std::size_t n) {
   return "edge " + std::to_string(i) + " (vertices " + std::to_string(i) + "-" +
          std::to_string((i + 1) % n) + ")";
@@ -178,14 +139,9 @@ void ValidateOutline(const std::vector<Eigen::Vector2d>& outline) {
                       std::to_string((i + 1) % n) + "; the outline must be a simple polygon");
     }
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
-      if (SegmentsTouch(outline[i], outline[(i + 1) % n], outline[j], outline[(j + 1) % n], zero)) {
-        throw MeshError(std::string(kFunction) + ": outline " + Edge(i, n) + " and " + Edge(j, n) +
-                        " intersect; the outline must be a simple polygon");
-      }
-    }
+  if (const auto crossing = FirstCrossing(outline, zero)) {
+    throw MeshError(std::string(kFunction) + ": outline " + Edge(crossing->first, n) + " and " +
+                    Edge(crossing->second, n) + " intersect; the outline must be a simple polygon");
   }
   if (!(std::abs(ShoelaceArea(outline)) > zero)) {
     throw MeshError(std::string(kFunction) + ": the outline encloses no area");
