@@ -175,8 +175,15 @@ void RequireAsciiDxf(const std::filesystem::path& file) {
                         ": not a DXF file (an ASCII DXF begins with the group 0 / SECTION)");
 }
 
+// In metres, rounded to the nanometre: a piece saved in inches and in
+// millimetres then has the very same coordinates (the two conversions differ
+// in the last bits, and Gmsh's mesh follows such bits), 10⁻⁶ of any cutting
+// tolerance.
 PiecePoint Scaled(const PiecePoint& p, const PiecePoint& base, double unit) {
-  return {(p[0] - base[0]) * unit, (p[1] - base[1]) * unit};
+  auto metres = [&](double x, double origin) {
+    return std::round((x - origin) * unit * 1e9) / 1e9;
+  };
+  return {metres(p[0], base[0]), metres(p[1], base[1])};
 }
 
 PieceLine Scaled(const PieceLine& line, const PiecePoint& base, double unit) {

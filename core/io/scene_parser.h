@@ -25,10 +25,14 @@ class SceneParser {
  private:
   Fabric ReadFabric(const JsonCursor& c);
   Outline ReadOutline(const JsonCursor& c);
+  // A piece of a DXF-AAMA pattern file (relative to the scene's folder).
+  PatternOutline ReadPatternOutline(const JsonCursor& c);
   MeshSpec ReadMeshSpec(const JsonCursor& c, const Outline& outline);
   ImperfectionSpec ReadImperfection(const JsonCursor& c);
   Material ReadMaterialOrLibrary(const JsonCursor& c);
   Material ReadMaterial(const JsonCursor& c);
+  // material.angle_deg: "grain": the pattern piece's grain line [deg].
+  double GrainAngle(const JsonCursor& c) const;
   Bending ReadBending(const JsonCursor& c);
   // The law and, from its "hysteresis" key, its 2HB.
   BendingLaw ReadBendingLaw(const JsonCursor& c, Hysteresis& hysteresis);
@@ -59,6 +63,7 @@ class SceneParser {
   // Names already taken, per namespace, with the path that took them.
   std::map<std::string, std::map<std::string, std::string>> names_;
   std::filesystem::path base_;
+  const Fabric* fabric_ = nullptr;  // while the material is read
 };
 
 }  // namespace drape

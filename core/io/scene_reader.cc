@@ -83,7 +83,9 @@ Scene SceneParser::Read(const JsonCursor& root) {
   if (auto c = root.Find("name")) scene.name = c->String();
   if (auto c = root.Find("description")) scene.description = c->String();
   scene.fabric = ReadFabric(root["fabric"]);
+  fabric_ = &scene.fabric;  // "grain" reads the piece's grain line
   scene.material = ReadMaterialOrLibrary(root["material"]);
+  fabric_ = nullptr;
   scene.supports =
       ReadList<Support>(root.Find("supports"), [&](auto& c) { return ReadSupport(c); });
   scene.grippers =

@@ -1,5 +1,6 @@
 // Reading a scene's fabric: its outline, how finely it is meshed, where it
 // lies and the imperfection that lets it buckle.
+#include "core/io/dxf_pattern_reader.h"
 #include "core/io/scene_parser.h"
 
 namespace drape {
@@ -15,8 +16,8 @@ Fabric SceneParser::ReadFabric(const JsonCursor& c) {
 }
 
 Outline SceneParser::ReadOutline(const JsonCursor& c) {
-  c.ExpectObject({"rectangle", "disk", "polygon"});
-  switch (c.OneOf({"rectangle", "disk", "polygon"})) {
+  c.ExpectObject({"rectangle", "disk", "polygon", "pattern"});
+  switch (c.OneOf({"rectangle", "disk", "polygon", "pattern"})) {
     case 0: {
       auto r = c["rectangle"];
       r.ExpectObject({"size", "center"});
@@ -34,6 +35,8 @@ Outline SceneParser::ReadOutline(const JsonCursor& c) {
       if (auto center = d.Find("center")) out.center = center->QuantityVec2(dim::kLength);
       return out;
     }
+    case 3:
+      return ReadPatternOutline(c["pattern"]);
     default: {
       auto p = c["polygon"];
       PolygonOutline out;
@@ -43,6 +46,26 @@ Outline SceneParser::ReadOutline(const JsonCursor& c) {
       return out;
     }
   }
+}
+
+PatternOutline SceneParser::ReadPatternOutline(const JsonCursor& c) {
+  c.ExpectObject({"file", "piece"});
+  PatternOutline out;
+  out.file = ReadFileReference(c["file"]);
+  out.piece = c["piece"].String();
+  const std::filesystem::path file(out.file);
+  DxfPattern pattern;
+  try {
+    pattern = ReadDxfPattern(file.is_absolute() ? file : base_ / file);
+  } catch (const DxfPatternError& e) {
+    c["file"].Fail(e.what());
+  }
+  try {
+    out.shape = FindPiece(pattern, out.piece, out.file);
+  } catch (const DxfPatternError& e) {
+    c["piece"].Fail(e.what());
+  }
+  return out;
 }
 
 MeshSpec SceneParser::ReadMeshSpec(const JsonCursor& c, const Outline& outline) {

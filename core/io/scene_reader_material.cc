@@ -155,8 +155,26 @@ Material SceneParser::ReadMaterial(const JsonCursor& c) {
   }
   m.bending.warp = LinearBending{};
   if (auto b = c.Find("bending")) m.bending = ReadBending(*b);
-  if (auto a = c.Find("angle_deg")) m.angle_deg = ReadAngleDeg(*a);
+  if (auto a = c.Find("angle_deg")) {
+    if (a->value().is_string() && a->String() == "grain") {
+      m.angle_deg = GrainAngle(*a);
+      m.angle_from_grain = true;
+    } else {
+      m.angle_deg = ReadAngleDeg(*a);
+    }
+  }
   return m;
+}
+
+double SceneParser::GrainAngle(const JsonCursor& c) const {
+  const auto* pattern = fabric_ ? std::get_if<PatternOutline>(&fabric_->outline) : nullptr;
+  if (!pattern)
+    c.Fail(
+        "\"grain\" takes the warp from a pattern piece's grain line; this fabric's outline is "
+        "not a pattern piece");
+  if (!pattern->shape.grain)
+    c.Fail("piece '" + pattern->piece + "' of " + pattern->file + " has no grain line (layer 7)");
+  return GrainAngleDeg(pattern->shape);
 }
 
 Bending SceneParser::ReadBending(const JsonCursor& c) {

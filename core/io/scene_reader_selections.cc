@@ -5,9 +5,19 @@
 namespace drape {
 
 Selection SceneParser::ReadSelection(const JsonCursor& c) {
-  c.ExpectObject({"point", "line", "box", "circle", "corners", "edge", "nodes", "tolerance"});
+  c.ExpectObject({"point",
+                  "line",
+                  "box",
+                  "circle",
+                  "corners",
+                  "edge",
+                  "nodes",
+                  "notch",
+                  "drill",
+                  "tolerance"});
   Selection s;
-  switch (c.OneOf({"point", "line", "box", "circle", "corners", "edge", "nodes"})) {
+  switch (
+      c.OneOf({"point", "line", "box", "circle", "corners", "edge", "nodes", "notch", "drill"})) {
     case 0:
       s.shape = PointSelection{c["point"].QuantityVec2(dim::kLength)};
       break;
@@ -41,6 +51,15 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
     case 5: {
       int side = c["edge"].Choice({"left", "right", "bottom", "top", "boundary"});
       s.shape = EdgeSelection{static_cast<Side>(side)};
+      break;
+    }
+    case 7:
+    case 8: {
+      const bool notch = c.Has("notch");
+      auto k = c[notch ? "notch" : "drill"];
+      PatternMarkSelection mark{notch ? PatternMark::kNotch : PatternMark::kDrill, k.Integer()};
+      if (mark.index < 1) k.Fail("counts from 1 (the first in the pattern file)");
+      s.shape = mark;
       break;
     }
     default: {

@@ -22,6 +22,9 @@ json ToJson(const Outline& outline) {
                         [](const PolygonOutline& p) {
                           return json{{"polygon", p.vertices}};
                         },
+                        [](const PatternOutline& p) {
+                          return json{{"pattern", {{"file", p.file}, {"piece", p.piece}}}};
+                        },
                     },
                     outline);
 }
@@ -82,7 +85,9 @@ json ToJson(const BendingLaw& law, const Hysteresis& hysteresis) {
 }
 
 json ToJson(const Material& m) {
-  json j{{"thickness", m.thickness}, {"areal_weight", m.areal_weight}, {"angle_deg", m.angle_deg}};
+  json j{{"thickness", m.thickness},
+         {"areal_weight", m.areal_weight},
+         {"angle_deg", m.angle_from_grain ? json("grain") : json(m.angle_deg)}};
   std::visit(Overloaded{
                  [&](const IsotropicMembrane& i) {
                    j["youngs_modulus"] = i.youngs_modulus;
@@ -103,30 +108,34 @@ json ToJson(const Material& m) {
 }
 
 json ToJson(const Selection& s) {
-  json j = std::visit(Overloaded{
-                          [](const PointSelection& p) {
-                            return json{{"point", p.at}};
-                          },
-                          [](const LineSelection& l) {
-                            return json{{"line", {l.from, l.to}}};
-                          },
-                          [](const BoxSelection& b) {
-                            return json{{"box", {b.min, b.max}}};
-                          },
-                          [](const CircleSelection& c) {
-                            return json{{"circle", {{"center", c.center}, {"radius", c.radius}}}};
-                          },
-                          [](const CornersSelection&) {
-                            return json{{"corners", true}};
-                          },
-                          [](const EdgeSelection& e) {
-                            return json{{"edge", ToString(e.side)}};
-                          },
-                          [](const NodesSelection& n) {
-                            return json{{"nodes", n.nodes}};
-                          },
-                      },
-                      s.shape);
+  json j =
+      std::visit(Overloaded{
+                     [](const PointSelection& p) {
+                       return json{{"point", p.at}};
+                     },
+                     [](const LineSelection& l) {
+                       return json{{"line", {l.from, l.to}}};
+                     },
+                     [](const BoxSelection& b) {
+                       return json{{"box", {b.min, b.max}}};
+                     },
+                     [](const CircleSelection& c) {
+                       return json{{"circle", {{"center", c.center}, {"radius", c.radius}}}};
+                     },
+                     [](const CornersSelection&) {
+                       return json{{"corners", true}};
+                     },
+                     [](const EdgeSelection& e) {
+                       return json{{"edge", ToString(e.side)}};
+                     },
+                     [](const NodesSelection& n) {
+                       return json{{"nodes", n.nodes}};
+                     },
+                     [](const PatternMarkSelection& m) {
+                       return json{{m.mark == PatternMark::kNotch ? "notch" : "drill", m.index}};
+                     },
+                 },
+                 s.shape);
   if (s.tolerance) j["tolerance"] = *s.tolerance;
   return j;
 }
@@ -340,6 +349,7 @@ Scene WithAbsoluteReferences(const Scene& scene, const std::filesystem::path& fo
       if (auto* curve = std::get_if<CurveBending>(law)) absolute(curve->file);
   for (Obstacle& o : out.obstacles)
     if (auto* mesh = std::get_if<MeshShape>(&o.shape)) absolute(mesh->file);
+  if (auto* pattern = std::get_if<PatternOutline>(&out.fabric.outline)) absolute(pattern->file);
   return out;
 }
 

@@ -8,6 +8,15 @@
 #include "core/model/scene_error.h"
 
 namespace drape {
+namespace {
+
+std::vector<Eigen::Vector2d> Points(const std::vector<Vec2>& vertices) {
+  std::vector<Eigen::Vector2d> points;
+  for (const auto& v : vertices) points.emplace_back(v[0], v[1]);
+  return points;
+}
+
+}  // namespace
 
 std::array<int, 2> RectangleElementCounts(const RectangleOutline& rectangle, double element_size) {
   auto count = [&](double length) {
@@ -26,16 +35,18 @@ Mesh MeshFabric(const Fabric& fabric) {
           r->size[0], r->size[1], {r->center[0], r->center[1]}, n[0], n[1], fabric.elevation);
     } else if (const auto* d = std::get_if<DiskOutline>(&fabric.outline)) {
       mesh = MeshDisk(d->radius, {d->center[0], d->center[1]}, *fabric.mesh.size, fabric.elevation);
+    } else if (const auto* p = std::get_if<PolygonOutline>(&fabric.outline)) {
+      mesh = MeshPolygon(Points(p->vertices), *fabric.mesh.size, fabric.elevation);
     } else {
-      std::vector<Eigen::Vector2d> vertices;
-      for (const auto& v : std::get<PolygonOutline>(fabric.outline).vertices)
-        vertices.emplace_back(v[0], v[1]);
-      mesh = MeshPolygon(vertices, *fabric.mesh.size, fabric.elevation);
+      const PatternPiece& piece = std::get<PatternOutline>(fabric.outline).shape;
+      std::vector<std::vector<Eigen::Vector2d>> holes;
+      for (const auto& hole : piece.holes) holes.push_back(Points(hole));
+      mesh = MeshPolygon(Points(piece.boundary), *fabric.mesh.size, fabric.elevation, holes);
     }
   } catch (const MeshError& e) {
-    throw SceneError(
-        std::holds_alternative<PolygonOutline>(fabric.outline) ? "fabric.outline" : "fabric.mesh",
-        e.what());
+    const bool shaped = std::holds_alternative<PolygonOutline>(fabric.outline) ||
+                        std::holds_alternative<PatternOutline>(fabric.outline);
+    throw SceneError(shaped ? "fabric.outline" : "fabric.mesh", e.what());
   }
   if (fabric.imperfection && fabric.imperfection->amplitude > 0) {
     const ImperfectionSpec& spec = *fabric.imperfection;

@@ -148,6 +148,42 @@ void ValidateOutline(const std::vector<Eigen::Vector2d>& outline) {
   }
 }
 
+// A hole must be a simple polygon lying inside the outline, clear of its
+// edges and of the other holes.
+void ValidateHole(const std::vector<Eigen::Vector2d>& outline,
+                  const std::vector<std::vector<Eigen::Vector2d>>& holes,
+                  std::size_t h) {
+  const std::string which = "MeshPolygon: hole " + std::to_string(h);
+  const std::vector<Eigen::Vector2d>& hole = holes[h];
+  try {
+    ValidateOutline(hole);
+  } catch (const MeshError& e) {
+    throw MeshError(which + ": " + e.what());
+  }
+  Eigen::Vector2d lo = outline[0], hi = outline[0];
+  for (const auto& v : outline) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const double zero = 1e-12 * (hi - lo).squaredNorm();
+  auto edges_touch = [&](const std::vector<Eigen::Vector2d>& a,
+                         const std::vector<Eigen::Vector2d>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = 0; j < b.size(); ++j)
+        if (SegmentsTouch(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()], zero))
+          return true;
+    return false;
+  };
+  if (edges_touch(hole, outline))
+    throw MeshError(which + " meets the outline; a hole must lie inside it, clear of its edges");
+  if (!InsidePolygon(outline, hole[0])) throw MeshError(which + " lies outside the outline");
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    if (k == h) continue;
+    if (edges_touch(hole, holes[k]) || InsidePolygon(holes[k], hole[0]))
+      throw MeshError(which + " overlaps hole " + std::to_string(k));
+  }
+}
+
 // For error messages: the outline's narrowest gap, the shortest distance from
 // a vertex to an edge not incident to it (two disjoint segments are nearest at
 // an endpoint of one of them), against the element size.
@@ -342,8 +378,9 @@ void ReadMesh(const GmshApi& gmsh, RawMesh& raw) {
 }
 
 // Meshes the plane surface bounded by the curves `add_curves(geo)` adds to
-// the geo kernel (returning their tags in loop order); the curves' points
-// carry the mesh size. `note()` ends error messages.
+// the geo kernel (returning their tags, one loop after another: the outer
+// boundary, then each hole); the curves' points carry the mesh size.
+// `note()` ends error messages.
 template <typename AddCurves>
 RawMesh RunGmsh(const char* function, const Note& note, AddCurves add_curves) {
   std::lock_guard<std::mutex> lock(GmshMutex());
@@ -356,10 +393,12 @@ RawMesh RunGmsh(const char* function, const Note& note, AddCurves add_curves) {
     int ierr = 0;
     gmsh.ModelAdd("drape", &ierr);
     Check(ierr, "gmshModelAdd");
-    std::vector<int> curves = add_curves(Geo{gmsh});
-    int loop = gmsh.GeoAddCurveLoop(curves.data(), curves.size(), -1, 0, &ierr);
-    Check(ierr, "gmshModelGeoAddCurveLoop");
-    const int surface = gmsh.GeoAddPlaneSurface(&loop, 1, -1, &ierr);
+    std::vector<int> wires;
+    for (std::vector<int>& curves : add_curves(Geo{gmsh})) {
+      wires.push_back(gmsh.GeoAddCurveLoop(curves.data(), curves.size(), -1, 0, &ierr));
+      Check(ierr, "gmshModelGeoAddCurveLoop");
+    }
+    const int surface = gmsh.GeoAddPlaneSurface(wires.data(), wires.size(), -1, &ierr);
     Check(ierr, "gmshModelGeoAddPlaneSurface");
     gmsh.GeoMeshSetRecombine(2, surface, 45, &ierr);
     Check(ierr, "gmshModelGeoMeshSetRecombine");
@@ -504,28 +543,38 @@ Mesh MeshDisk(double radius, const Eigen::Vector2d& center, double element_size,
                       geo.Point(cx, cy - radius, h)};
     std::vector<int> arcs;
     for (int k = 0; k < 4; ++k) arcs.push_back(geo.Arc(p[k], c, p[(k + 1) % 4]));
-    return arcs;
+    return std::vector<std::vector<int>>{arcs};
   });
   return Canonical(kFunction, raw, elevation, note);
 }
 
 Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
                  double element_size,
-                 double elevation) {
+                 double elevation,
+                 const std::vector<std::vector<Eigen::Vector2d>>& holes) {
   constexpr const char* kFunction = "MeshPolygon";
   ValidateOutline(outline);
+  for (std::size_t h = 0; h < holes.size(); ++h) ValidateHole(outline, holes, h);
   RequirePositiveFinite(kFunction, "element_size", element_size);
   RequireFinite(kFunction, "elevation", elevation);
-  RequireFeasibleCount(kFunction, std::abs(ShoelaceArea(outline)), element_size);
+  double area = std::abs(ShoelaceArea(outline));
+  for (const auto& hole : holes) area -= std::abs(ShoelaceArea(hole));
+  RequireFeasibleCount(kFunction, area, element_size);
 
   const Note note = [&] { return NarrowestGapNote(outline, element_size); };
   const RawMesh raw = RunGmsh(kFunction, note, [&](const Geo& geo) {
-    std::vector<int> points;
-    for (const auto& v : outline) points.push_back(geo.Point(v.x(), v.y(), element_size));
-    std::vector<int> lines;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      lines.push_back(geo.Line(points[i], points[(i + 1) % points.size()]));
-    return lines;
+    std::vector<std::vector<int>> loops;
+    auto add_loop = [&](const std::vector<Eigen::Vector2d>& polygon) {
+      std::vector<int> points;
+      for (const auto& v : polygon) points.push_back(geo.Point(v.x(), v.y(), element_size));
+      std::vector<int> lines;
+      for (std::size_t i = 0; i < points.size(); ++i)
+        lines.push_back(geo.Line(points[i], points[(i + 1) % points.size()]));
+      loops.push_back(lines);
+    };
+    add_loop(outline);
+    for (const auto& hole : holes) add_loop(hole);
+    return loops;
   });
   return Canonical(kFunction, raw, elevation, note);
 }

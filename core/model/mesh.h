@@ -32,10 +32,12 @@ Mesh MeshRectangle(
 // All-quad unstructured meshes made by Gmsh (quad recombination), with target
 // element edge `element_size`, lying in the plane z = elevation. Throws MeshError.
 Mesh MeshDisk(double radius, const Eigen::Vector2d& center, double element_size, double elevation);
-// `outline` is a simple polygon, either orientation, not closed (last != first).
+// `outline` is a simple polygon, either orientation, not closed (last != first);
+// each of `holes` likewise, inside it and apart from it and from each other.
 Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
                  double element_size,
-                 double elevation);
+                 double elevation,
+                 const std::vector<std::vector<Eigen::Vector2d>>& holes = {});
 
 // Sum of the quads' areas projected on the xy plane [m²] (signed: a quad
 // numbered clockwise counts negative).

@@ -139,6 +139,22 @@ std::vector<int> SelectNodes(const Selection& selection, const Mesh& mesh, const
                                      std::to_string(mesh.NodeCount() - 1) + ")");
             return n.nodes;
           },
+          [&](const PatternMarkSelection& m) {
+            const auto* pattern = std::get_if<PatternOutline>(&outline);
+            const char* what = m.mark == PatternMark::kNotch ? "notch" : "drill hole";
+            if (!pattern)
+              throw SelectionError(std::string("a ") + what +
+                                   " is a pattern piece's; this fabric's outline is not one");
+            const auto& marks =
+                m.mark == PatternMark::kNotch ? pattern->shape.notches : pattern->shape.drills;
+            if (m.index > static_cast<int>(marks.size()))
+              throw SelectionError(
+                  std::string(what) + " " + std::to_string(m.index) + " does not exist; piece '" +
+                  pattern->piece + "' has " + std::to_string(marks.size()) + " " + what +
+                  (m.mark == PatternMark::kNotch ? "es" : "s") +
+                  (marks.empty() ? "" : " (1 to " + std::to_string(marks.size()) + ")"));
+            return std::vector<int>{NearestNode(mesh, marks[m.index - 1])};
+          },
       },
       selection.shape);
   std::sort(nodes.begin(), nodes.end());

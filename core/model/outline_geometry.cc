@@ -28,6 +28,30 @@ bool InsidePolygon(const std::vector<Vec2>& v, const Vec2& p) {
   return inside;
 }
 
+double DistanceToLoop(const std::vector<Vec2>& v, const Vec2& p) {
+  double best = INFINITY;
+  for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
+    best = std::min(best, DistanceToSegment(p, v[j], v[i]));
+  return best;
+}
+
+double PolygonArea(const std::vector<Vec2>& v) {
+  double twice = 0;
+  for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
+    twice += v[j][0] * v[i][1] - v[i][0] * v[j][1];
+  return std::abs(twice) / 2;
+}
+
+Bounds2 VertexBounds(const std::vector<Vec2>& vertices) {
+  Bounds2 b{vertices.front(), vertices.front()};
+  for (const auto& v : vertices)
+    for (int k = 0; k < 2; ++k) {
+      b.min[k] = std::min(b.min[k], v[k]);
+      b.max[k] = std::max(b.max[k], v[k]);
+    }
+  return b;
+}
+
 }  // namespace
 
 Bounds2 OutlineBounds(const Outline& outline) {
@@ -41,15 +65,8 @@ Bounds2 OutlineBounds(const Outline& outline) {
                           return Bounds2{{d.center[0] - d.radius, d.center[1] - d.radius},
                                          {d.center[0] + d.radius, d.center[1] + d.radius}};
                         },
-                        [](const PolygonOutline& p) {
-                          Bounds2 b{p.vertices.front(), p.vertices.front()};
-                          for (const auto& v : p.vertices)
-                            for (int k = 0; k < 2; ++k) {
-                              b.min[k] = std::min(b.min[k], v[k]);
-                              b.max[k] = std::max(b.max[k], v[k]);
-                            }
-                          return b;
-                        },
+                        [](const PolygonOutline& p) { return VertexBounds(p.vertices); },
+                        [](const PatternOutline& p) { return VertexBounds(p.shape.boundary); },
                     },
                     outline);
 }
@@ -63,12 +80,11 @@ double OutlineArea(const Outline& outline) {
   return std::visit(Overloaded{
                         [](const RectangleOutline& r) { return r.size[0] * r.size[1]; },
                         [](const DiskOutline& d) { return M_PI * d.radius * d.radius; },
-                        [](const PolygonOutline& p) {
-                          double twice = 0;
-                          const auto& v = p.vertices;
-                          for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
-                            twice += v[j][0] * v[i][1] - v[i][0] * v[j][1];
-                          return std::abs(twice) / 2;
+                        [](const PolygonOutline& p) { return PolygonArea(p.vertices); },
+                        [](const PatternOutline& p) {
+                          double area = PolygonArea(p.shape.boundary);
+                          for (const auto& hole : p.shape.holes) area -= PolygonArea(hole);
+                          return area;
                         },
                     },
                     outline);
@@ -86,12 +102,16 @@ double DistanceToOutline(const Outline& outline, const Vec2& p) {
                           return std::max(0.0, r - d.radius);
                         },
                         [&](const PolygonOutline& poly) {
-                          const auto& v = poly.vertices;
-                          if (InsidePolygon(v, p)) return 0.0;
-                          double best = INFINITY;
-                          for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
-                            best = std::min(best, DistanceToSegment(p, v[j], v[i]));
-                          return best;
+                          if (InsidePolygon(poly.vertices, p)) return 0.0;
+                          return DistanceToLoop(poly.vertices, p);
+                        },
+                        [&](const PatternOutline& pattern) {
+                          const PatternPiece& piece = pattern.shape;
+                          if (!InsidePolygon(piece.boundary, p))
+                            return DistanceToLoop(piece.boundary, p);
+                          for (const auto& hole : piece.holes)
+                            if (InsidePolygon(hole, p)) return DistanceToLoop(hole, p);
+                          return 0.0;
                         },
                     },
                     outline);
@@ -108,6 +128,7 @@ std::vector<Vec2> OutlineCorners(const Outline& outline) {
                         },
                         [](const DiskOutline&) { return std::vector<Vec2>{}; },
                         [](const PolygonOutline& p) { return p.vertices; },
+                        [](const PatternOutline& p) { return p.shape.boundary; },
                     },
                     outline);
 }

@@ -17,14 +17,16 @@ Bounds2 OutlineBounds(const Outline& outline);
 // Diagonal of the bounding box [m]: the part's characteristic size.
 double OutlineSize(const Outline& outline);
 
-// Area enclosed by the outline [m²].
+// Area enclosed by the outline, its holes left out [m²].
 double OutlineArea(const Outline& outline);
 
-// Distance from p to the part (0 inside or on the boundary) [m].
+// Distance from p to the part (0 inside or on the boundary; inside a hole,
+// the distance to the hole's edge) [m].
 double DistanceToOutline(const Outline& outline, const Vec2& p);
 
 // The outline's corners: a rectangle's four (counter-clockwise from the
-// lower left) or a polygon's vertices; a disk has none.
+// lower left) or a polygon's or a pattern piece's cut-line vertices; a disk
+// has none.
 std::vector<Vec2> OutlineCorners(const Outline& outline);
 
 }  // namespace drape

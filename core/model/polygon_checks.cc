@@ -42,6 +42,18 @@ bool SegmentsTouch(const Eigen::Vector2d& p,
   return false;
 }
 
+bool InsidePolygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < b.x() + (p.y() - b.y()) * (a.x() - b.x()) / (a.y() - b.y()))
+      inside = !inside;
+  }
+  return inside;
+}
+
 std::optional<std::pair<std::size_t, std::size_t>> FirstCrossing(
     const std::vector<Eigen::Vector2d>& polygon, double zero) {
   const std::size_t n = polygon.size();

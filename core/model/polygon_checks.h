@@ -23,6 +23,10 @@ bool SegmentsTouch(const Eigen::Vector2d& p,
                    const Eigen::Vector2d& s,
                    double zero);
 
+// Whether p lies inside the closed polygon (even-odd rule; a point on an
+// edge may count either way).
+bool InsidePolygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p);
+
 // The first two edges of the closed polygon that are not neighbours and
 // share a point (edge i runs from vertex i to i + 1), or none: a simple
 // polygon. `zero` as for SegmentsTouch. O(n²).

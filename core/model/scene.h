@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/model/imperfection.h"
+#include "core/model/pattern_piece.h"
 
 namespace drape {
 
@@ -37,7 +38,16 @@ struct PolygonOutline {
   std::vector<Vec2> vertices;  // [m], not closed
   friend bool operator==(const PolygonOutline&, const PolygonOutline&) = default;
 };
-using Outline = std::variant<RectangleOutline, DiskOutline, PolygonOutline>;
+// A piece from a pattern file (DXF-AAMA, io/dxf_pattern_reader.h): the file
+// as the scene names it (relative to the scene's folder) and the piece's
+// geometry read from it, in the piece's own coordinates.
+struct PatternOutline {
+  std::string file;
+  std::string piece;
+  PatternPiece shape;
+  friend bool operator==(const PatternOutline&, const PatternOutline&) = default;
+};
+using Outline = std::variant<RectangleOutline, DiskOutline, PolygonOutline, PatternOutline>;
 
 struct MeshSpec {
   std::optional<std::array<int, 2>> elements;  // [nx, ny], rectangles
@@ -119,6 +129,8 @@ struct Material {
   Membrane membrane;
   Bending bending;
   double angle_deg = 0;  // warp direction from the part's x axis [deg]
+  // angle_deg was taken from the pattern piece's grain line ("grain").
+  bool angle_from_grain = false;
   friend bool operator==(const Material&, const Material&) = default;
 };
 
@@ -155,13 +167,22 @@ struct NodesSelection {
   std::vector<int> nodes;
   friend bool operator==(const NodesSelection&, const NodesSelection&) = default;
 };
+// The node nearest a pattern piece's K-th notch or drill hole
+// (fabric.outline.pattern), K counted from 1 in the file's order.
+enum class PatternMark { kNotch, kDrill };
+struct PatternMarkSelection {
+  PatternMark mark = PatternMark::kNotch;
+  int index = 1;
+  friend bool operator==(const PatternMarkSelection&, const PatternMarkSelection&) = default;
+};
 using SelectionShape = std::variant<PointSelection,
                                     LineSelection,
                                     BoxSelection,
                                     CircleSelection,
                                     CornersSelection,
                                     EdgeSelection,
-                                    NodesSelection>;
+                                    NodesSelection,
+                                    PatternMarkSelection>;
 
 struct Selection {
   SelectionShape shape;

@@ -128,6 +128,13 @@ void FabricEditor::setUnitSystem(UnitSystem system) {
 
 void FabricEditor::ShowOutline() {
   const Outline& outline = document_->scene().fabric.outline;
+  // A pattern piece comes from its file (File ▸ Import pattern…): shown,
+  // not typed.
+  const bool pattern = std::holds_alternative<PatternOutline>(outline);
+  const int pattern_item = shape_->findText("pattern");
+  if (pattern && pattern_item < 0) shape_->addItem("pattern");
+  if (!pattern && pattern_item >= 0) shape_->removeItem(pattern_item);
+  extent_->setReadOnly(pattern);
   std::visit(Overloaded{[&](const RectangleOutline& r) {
                           shape_->setCurrentText("rectangle");
                           extent_->setText(ListText(r.size, units_));
@@ -143,13 +150,20 @@ void FabricEditor::ShowOutline() {
                           QStringList vertices;
                           for (const Vec2& v : p.vertices) vertices << ListText(v, units_);
                           extent_->setText(vertices.join("; "));
+                        },
+                        [&](const PatternOutline& p) {
+                          shape_->setCurrentText("pattern");
+                          extent_->setText(QString("%1 in %2")
+                                               .arg(QString::fromStdString(p.piece),
+                                                    QString::fromStdString(p.file)));
                         }},
              outline);
   if (auto* label = qobject_cast<QLabel*>(form_->labelForField(extent_)))
     label->setText(std::holds_alternative<RectangleOutline>(outline) ? "size"
                    : std::holds_alternative<DiskOutline>(outline)    ? "radius"
+                   : pattern                                         ? "piece"
                                                                      : "vertices");
-  form_->setRowVisible(center_, !std::holds_alternative<PolygonOutline>(outline));
+  form_->setRowVisible(center_, !std::holds_alternative<PolygonOutline>(outline) && !pattern);
 }
 
 void FabricEditor::refresh() {

@@ -44,6 +44,11 @@ QString OutlineSummary(const Fabric& f, UnitSystem system) {
                  },
                  [](const PolygonOutline& p) {
                    return QString("polygon, %1 vertices").arg(p.vertices.size());
+                 },
+                 [](const PatternOutline& p) {
+                   return QString("pattern piece %1, %2 holes")
+                       .arg(QString::fromStdString(p.piece))
+                       .arg(p.shape.holes.size());
                  }},
       f.outline);
 }

@@ -38,6 +38,10 @@ QString DescribeSelection(const Selection& selection, UnitSystem system) {
             return QString(names[static_cast<int>(e.side)]);
           },
           [](const NodesSelection& n) { return QString("%1 nodes").arg(n.nodes.size()); },
+          [](const PatternMarkSelection& m) {
+            return QString(m.mark == PatternMark::kNotch ? "notch %1" : "drill hole %1")
+                .arg(m.index);
+          },
       },
       selection.shape);
 }
