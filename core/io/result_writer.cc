@@ -15,7 +15,8 @@ namespace drape {
 namespace {
 
 // The scene a result carries must read back without the files it named:
-// measured curves keep their points (SI), meshes their absolute paths.
+// measured curves keep their points (SI), meshes and patterns their absolute
+// paths.
 Scene SelfContained(Scene scene) {
   auto embed = [](BendingLaw& law) {
     if (auto* curve = std::get_if<CurveBending>(&law)) curve->file.clear();
@@ -25,6 +26,9 @@ Scene SelfContained(Scene scene) {
   for (auto& obstacle : scene.obstacles)
     if (auto* mesh = std::get_if<MeshShape>(&obstacle.shape); mesh && !mesh->resolved_path.empty())
       mesh->file = mesh->resolved_path;
+  if (auto* pattern = std::get_if<PatternOutline>(&scene.fabric.outline);
+      pattern && !pattern->resolved_path.empty())
+    pattern->file = pattern->resolved_path;
   return scene;
 }
 

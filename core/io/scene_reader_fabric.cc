@@ -54,9 +54,11 @@ PatternOutline SceneParser::ReadPatternOutline(const JsonCursor& c) {
   out.file = ReadFileReference(c["file"]);
   out.piece = c["piece"].String();
   const std::filesystem::path file(out.file);
+  const std::filesystem::path full = file.is_absolute() ? file : base_ / file;
+  out.resolved_path = std::filesystem::absolute(full).lexically_normal().string();
   DxfPattern pattern;
   try {
-    pattern = ReadDxfPattern(file.is_absolute() ? file : base_ / file);
+    pattern = ReadDxfPattern(full);
   } catch (const DxfPatternError& e) {
     c["file"].Fail(e.what());
   }

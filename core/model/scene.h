@@ -45,7 +45,11 @@ struct PatternOutline {
   std::string file;
   std::string piece;
   PatternPiece shape;
-  friend bool operator==(const PatternOutline&, const PatternOutline&) = default;
+  // Where the reader found the file (absolute); not part of the scene's meaning.
+  std::string resolved_path;
+  friend bool operator==(const PatternOutline& a, const PatternOutline& b) {
+    return a.file == b.file && a.piece == b.piece && a.shape == b.shape;
+  }
 };
 using Outline = std::variant<RectangleOutline, DiskOutline, PolygonOutline, PatternOutline>;
 

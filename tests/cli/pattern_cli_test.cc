@@ -1,0 +1,86 @@
+// `drape run` on a part cut from a pattern file (DXF-AAMA written by ezdxf,
+// tests/data/patterns/make_aama_dxf.py): it runs, its result reads back
+// from anywhere, and a bad pattern file is one message and exit 1.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "support/finite_outputs.h"
+#include "support/run_cli.h"
+#include "support/temp_dir.h"
+
+namespace drape {
+namespace {
+
+using test::CommandResult;
+using test::TempDir;
+using test::run_cli::Quote;
+using test::run_cli::ReadJson;
+using test::run_cli::RunCommand;
+using test::run_cli::WriteJson;
+
+void MakePattern(const std::filesystem::path& out) {
+  const std::filesystem::path script =
+      test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py";
+  const CommandResult r =
+      test::RunCommand("/usr/bin/python3 " + Quote(script) + " " + Quote(out) + " --units in");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
+// The BACK panel (a trapezoid, 36 cm at the bottom, 28 cm at the top, 28
+// cm high) flat on its weight, its bottom edge clamped: a cantilever plate.
+nlohmann::json BackPanel(const std::string& file) {
+  return {{"drape_scene", 1},
+          {"fabric",
+           {{"outline", {{"pattern", {{"file", file}, {"piece", "BACK"}}}}},
+            {"mesh", {{"size", "4 cm"}}}}},
+          {"material",
+           {{"thickness", "0.5 mm"},
+            {"areal_weight", "1.5 N/m^2"},
+            {"youngs_modulus", "20 MPa"},
+            {"poisson_ratio", 0.3},
+            {"angle_deg", "grain"}}},
+          {"supports", {{{"name", "hem"}, {"select", {{"edge", "bottom"}}}, {"fix", "clamp"}}}},
+          {"stages", {{{"name", "weight"}, {"kind", "gravity"}}}}};
+}
+
+TEST(PatternCli, RunsAPieceAndItsResultReadsBackFromElsewhere) {
+  TempDir dir("pattern-cli");
+  MakePattern(dir / "p.dxf");
+  const auto scene = WriteJson(BackPanel("p.dxf"), dir / "scene.json");
+  const CommandResult r = RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json result = ReadJson(dir / "out" / "result.json");
+  std::vector<std::string> nulls;
+  test::CollectNulls(result, "", nulls);
+  EXPECT_TRUE(nulls.empty()) << nulls.front();
+  EXPECT_EQ(result["scene_resolved"]["material"]["angle_deg"], "grain");
+  // The resolved scene names the pattern by its absolute path: it reads
+  // from another folder.
+  const std::string file =
+      result["scene_resolved"]["fabric"]["outline"]["pattern"]["file"].get<std::string>();
+  EXPECT_TRUE(std::filesystem::path(file).is_absolute()) << file;
+  std::filesystem::create_directories(dir / "elsewhere");
+  const auto copy = WriteJson(result["scene_resolved"], dir / "elsewhere" / "scene.json");
+  const CommandResult again = RunCommand("validate " + Quote(copy));
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+}
+
+TEST(PatternCli, ABadPatternFileIsOneMessageAndExitOne) {
+  TempDir dir("pattern-cli-bad");
+  std::ofstream(dir / "notes.dxf") << "a pattern, but not a DXF\n";
+  const auto scene = WriteJson(BackPanel("notes.dxf"), dir / "scene.json");
+  const CommandResult r = RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out"), true);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("fabric.outline.pattern.file: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("not a DXF file"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+}  // namespace
+}  // namespace drape
