@@ -1,17 +1,24 @@
-// `drape export RESULT -o DIR --format vtu|obj|ply|stl|csv [--step N|all]
-// [--solid]`: the deformed surface for ParaView, CAD, 3-D printing or a
-// spreadsheet. No display needed.
+// `drape export RESULT -o DIR --format vtu|obj|ply|stl|csv|dxf [--step
+// N|all] [--solid]`: the deformed surface for ParaView, CAD, 3-D printing or
+// a spreadsheet; with dxf, the part's outline projected on the table (xy),
+// where a lay-down planner wants to know the ply's edge landed. No display
+// needed.
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/render_program.h"
-#ifdef DRAPE_WITH_RENDER
 #include "app/run_input.h"
+#include "core/io/dxf_pattern_writer.h"
+#include "core/model/mesh_boundary.h"
 #include "core/model/scene_error.h"
+#ifdef DRAPE_WITH_RENDER
 #include "ui/render/surface_export.h"
 #endif
 
@@ -23,13 +30,48 @@ struct ExportArgs {
   bool solid = false;
 };
 
+// The outline of each step asked for, one DXF-AAMA file each
+// (outline-step-N.dxf): a pattern piece keeps its name and its notches
+// follow the fabric.
+int RunOutlineExport(const ExportArgs& args) {
+  try {
+    const RunInput run = ReadRunInput(args.input);
+    std::vector<size_t> steps;
+    if (args.step == "all") {
+      for (size_t i = 0; i < run.states.size(); ++i) steps.push_back(i);
+    } else {
+      steps.push_back(StepIndex(run, args.step));
+    }
+    std::string name = "FABRIC";
+    std::vector<PiecePoint> notches;
+    if (const auto* pattern = std::get_if<PatternOutline>(&run.scene.fabric.outline)) {
+      name = pattern->piece;
+      notches = pattern->shape.notches;
+    }
+    std::filesystem::create_directories(args.output);
+    for (size_t i : steps) {
+      const std::filesystem::path file =
+          std::filesystem::path(args.output) / ("outline-step-" + std::to_string(i) + ".dxf");
+      WriteDxfPattern(file,
+                      {ProjectedOutline(run.model.mesh, run.states[i].positions, name, notches)});
+    }
+    std::cerr << "  " << steps.size() << " files in " << args.output << "\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "drape export: " << e.what() << "\n";
+  }
+  return 1;
+}
+
 #ifndef DRAPE_WITH_RENDER
-// VTK writes the files: the command runs in drape-vtk.
-int RunExport(const ExportArgs&) {
+// VTK writes the surfaces: that command runs in drape-vtk.
+int RunExport(const ExportArgs& args) {
+  if (args.format == "dxf") return RunOutlineExport(args);
   return RunInRenderProgram("export");
 }
 #else
 int RunExport(const ExportArgs& args) {
+  if (args.format == "dxf") return RunOutlineExport(args);
   try {
     const RunInput run = ReadRunInput(args.input);
     const SurfaceFormat format = args.format == "vtu"   ? SurfaceFormat::kVtu
@@ -66,8 +108,11 @@ void AddExportCommand(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("input", args->input, "Result folder, its result.json, or a scene file")
       ->required();
   cmd->add_option("-o,--output", args->output, "Folder to write into")->required();
-  cmd->add_option("--format", args->format, "vtu (with run.pvd), obj, ply, stl or csv")
-      ->check(CLI::IsMember({"vtu", "obj", "ply", "stl", "csv"}))
+  cmd->add_option("--format",
+                  args->format,
+                  "vtu (with run.pvd), obj, ply, stl, csv, or dxf (the outline on the table, "
+                  "DXF-AAMA in mm)")
+      ->check(CLI::IsMember({"vtu", "obj", "ply", "stl", "csv", "dxf"}))
       ->capture_default_str();
   cmd->add_option("--step", args->step, "Step number, 0 for the reference, 'last' or 'all'")
       ->capture_default_str();

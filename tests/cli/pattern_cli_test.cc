@@ -71,6 +71,39 @@ TEST(PatternCli, RunsAPieceAndItsResultReadsBackFromElsewhere) {
   EXPECT_EQ(again.exit_code, 0) << again.output;
 }
 
+// ezdxf's reading (tests/data/patterns/describe_dxf.py) of a DXF file.
+nlohmann::json Described(const std::filesystem::path& file) {
+  const std::filesystem::path script =
+      test::SourceDir() / "tests" / "data" / "patterns" / "describe_dxf.py";
+  const CommandResult r = test::RunCommand("/usr/bin/python3 " + Quote(script) + " " + Quote(file),
+                                           test::Captured::kStdout);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return nlohmann::json::parse(r.output);
+}
+
+TEST(PatternCli, ExportsTheOutlineOnTheTableAsDxf) {
+  TempDir dir("pattern-cli-dxf");
+  MakePattern(dir / "p.dxf");
+  const auto scene = WriteJson(BackPanel("p.dxf"), dir / "scene.json");
+  ASSERT_EQ(RunCommand("run " + Quote(scene) + " -o " + Quote(dir / "out")).exit_code, 0);
+  for (const char* step : {"0", "last"}) {
+    const CommandResult r = RunCommand("export " + Quote(dir / "out") + " -o " + Quote(dir / step) +
+                                       " --format dxf --step " + step);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  // The reference: the trapezoid as drawn, (36 + 28) / 2 × 28 cm², in mm.
+  const nlohmann::json flat = Described(dir / "0" / "outline-step-0.dxf");
+  EXPECT_EQ(flat["insunits"], 4);
+  EXPECT_NEAR(flat["pieces"]["BACK"]["cut_area"].get<double>(), 32.0 * 28.0 * 100.0, 1e-6);
+  // Hanging over its clamped hem the panel's shadow on the table shrinks.
+  std::filesystem::path last;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "last")) last = entry.path();
+  const double drooped = Described(last)["pieces"]["BACK"]["cut_area"].get<double>();
+  EXPECT_TRUE(std::isfinite(drooped));
+  EXPECT_LT(drooped, 32.0 * 28.0 * 100.0);
+  EXPECT_GT(drooped, 0.0);
+}
+
 TEST(PatternCli, ABadPatternFileIsOneMessageAndExitOne) {
   TempDir dir("pattern-cli-bad");
   std::ofstream(dir / "notes.dxf") << "a pattern, but not a DXF\n";
