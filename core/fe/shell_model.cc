@@ -36,44 +36,31 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> ReferenceDirectors(const Mesh& mesh) {
   return t;
 }
 
-ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe) {
-  for (int e = 0; e < mesh.ElementCount(); ++e) {
-    double xi, eta;
-    if (LocateInElement(mesh, e, probe.at, xi, eta))
-      return {probe.name, e, std::clamp(xi, -1.0, 1.0), std::clamp(eta, -1.0, 1.0)};
-  }
-  // On a curved outline the meshed polygon lies slightly inside: use the nearest node.
-  int best = 0;
-  double best_d = INFINITY;
-  for (int e = 0; e < mesh.ElementCount(); ++e)
-    for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector2d xk = mesh.positions.row(mesh.quads(e, k)).head<2>();
-      double d = (xk - Eigen::Vector2d(probe.at[0], probe.at[1])).norm();
-      if (d < best_d) {
-        best_d = d;
-        best = 4 * e + k;
-      }
-    }
-  return {probe.name, best / 4, kQuadNodeXi[best % 4], kQuadNodeEta[best % 4]};
-}
-
 }  // namespace
 
 bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta) {
   Eigen::Matrix<double, 2, 4> corners;
   for (int k = 0; k < 4; ++k) corners.col(k) = mesh.positions.row(mesh.quads(e, k)).head<2>();
   xi = eta = 0;
+  const Eigen::Vector2d target(p[0], p[1]);
+  const double size =
+      (corners.col(2) - corners.col(0)).norm() + (corners.col(3) - corners.col(1)).norm();
   for (int it = 0; it < 20; ++it) {
     Eigen::Vector4d n;
     Eigen::Matrix<double, 4, 2> dn;
     BilinearShape(xi, eta, n, &dn);
     const Eigen::Vector2d x = corners * n;
     const Eigen::Matrix2d j = corners * dn;
-    const Eigen::Vector2d step = j.inverse() * (Eigen::Vector2d(p[0], p[1]) - x);
+    const Eigen::Vector2d step = j.inverse() * (target - x);
     xi += step(0);
     eta += step(1);
     if (step.norm() < 1e-13) break;
   }
+  // Newton from a point far outside the element may stop anywhere, inside
+  // the square too: only a (ξ, η) that maps onto p locates it.
+  Eigen::Vector4d n;
+  BilinearShape(xi, eta, n, nullptr);
+  if (!((corners * n - target).norm() <= 1e-9 * size)) return false;
   const double slack = 1e-9;
   return std::abs(xi) <= 1 + slack && std::abs(eta) <= 1 + slack;
 }
@@ -143,6 +130,27 @@ std::array<Eigen::Vector3d, 4> ElementBendingStrains(const ShellModel& model,
                                                      int e) {
   const ShellElementState element = ElementStateOf(model, state, e);
   return BendingStrains(model.elements[e], element.positions, element.directors);
+}
+
+ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe) {
+  for (int e = 0; e < mesh.ElementCount(); ++e) {
+    double xi, eta;
+    if (LocateInElement(mesh, e, probe.at, xi, eta))
+      return {probe.name, e, std::clamp(xi, -1.0, 1.0), std::clamp(eta, -1.0, 1.0)};
+  }
+  // On a curved outline the meshed polygon lies slightly inside: use the nearest node.
+  int best = 0;
+  double best_d = INFINITY;
+  for (int e = 0; e < mesh.ElementCount(); ++e)
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d xk = mesh.positions.row(mesh.quads(e, k)).head<2>();
+      double d = (xk - Eigen::Vector2d(probe.at[0], probe.at[1])).norm();
+      if (d < best_d) {
+        best_d = d;
+        best = 4 * e + k;
+      }
+    }
+  return {probe.name, best / 4, kQuadNodeXi[best % 4], kQuadNodeEta[best % 4]};
 }
 
 Eigen::Vector3d ProbePosition(const ShellModel& model,

@@ -83,13 +83,18 @@ ShellModel BuildShellModel(const Scene& scene, Mesh mesh);
 // bilinear map; false when it lies outside the element (beyond round-off).
 bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta);
 
-// Position of a probe in a state: Σ N_I(ξ, η) φ_I over its element.
+// Where a reference point lies: its element and (ξ, η) in it; a point off
+// the mesh (a curved outline's meshed polygon lies slightly inside) goes to
+// the nearest node.
+ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe);
+
 // The bending strains of element `e` in `state` at its four Gauss points,
 // in the material frame (BendingStrains on the element's nodes).
 std::array<Eigen::Vector3d, 4> ElementBendingStrains(const ShellModel& model,
                                                      const ShellState& state,
                                                      int e);
 
+// Position of a probe in a state: Σ N_I(ξ, η) φ_I over its element.
 Eigen::Vector3d ProbePosition(const ShellModel& model,
                               const ProbePoint& probe,
                               const ShellState& state);

@@ -49,10 +49,13 @@ Outline SceneParser::ReadOutline(const JsonCursor& c) {
 }
 
 PatternOutline SceneParser::ReadPatternOutline(const JsonCursor& c) {
-  c.ExpectObject({"file", "piece"});
+  c.ExpectObject({"file", "piece", "at", "rotation_deg", "flip"});
   PatternOutline out;
   out.file = ReadFileReference(c["file"]);
   out.piece = c["piece"].String();
+  if (auto at = c.Find("at")) out.placement.at = at->QuantityVec2(dim::kLength);
+  if (auto r = c.Find("rotation_deg")) out.placement.rotation_deg = ReadAngleDeg(*r);
+  if (auto f = c.Find("flip")) out.placement.flip = f->Boolean();
   const std::filesystem::path file(out.file);
   const std::filesystem::path full = file.is_absolute() ? file : base_ / file;
   out.resolved_path = std::filesystem::absolute(full).lexically_normal().string();
@@ -63,7 +66,7 @@ PatternOutline SceneParser::ReadPatternOutline(const JsonCursor& c) {
     c["file"].Fail(e.what());
   }
   try {
-    out.shape = FindPiece(pattern, out.piece, out.file);
+    out.shape = Placed(FindPiece(pattern, out.piece, out.file), out.placement);
   } catch (const DxfPatternError& e) {
     c["piece"].Fail(e.what());
   }

@@ -23,7 +23,12 @@ json ToJson(const Outline& outline) {
                           return json{{"polygon", p.vertices}};
                         },
                         [](const PatternOutline& p) {
-                          return json{{"pattern", {{"file", p.file}, {"piece", p.piece}}}};
+                          json pattern{{"file", p.file}, {"piece", p.piece}};
+                          const PiecePlacement& at = p.placement;
+                          if (at.at != PiecePoint{0, 0}) pattern["at"] = at.at;
+                          if (at.rotation_deg != 0) pattern["rotation_deg"] = at.rotation_deg;
+                          if (at.flip) pattern["flip"] = true;
+                          return json{{"pattern", pattern}};
                         },
                     },
                     outline);

@@ -26,6 +26,19 @@ struct PatternPiece {
   friend bool operator==(const PatternPiece&, const PatternPiece&) = default;
 };
 
+// Where a piece lies on the part's plane: turned over (x → −x, the piece's
+// other face up) when `flip`, then turned by `rotation_deg`
+// counter-clockwise about the piece's origin, then moved by `at` [m].
+struct PiecePlacement {
+  PiecePoint at{0, 0};
+  double rotation_deg = 0;
+  bool flip = false;
+  friend bool operator==(const PiecePlacement&, const PiecePlacement&) = default;
+};
+
+// `piece` with every point placed (its grain line turns with it).
+PatternPiece Placed(PatternPiece piece, const PiecePlacement& placement);
+
 // The grain line's direction from the piece's x axis [deg], in (−180, 180].
 // Requires piece.grain.
 double GrainAngleDeg(const PatternPiece& piece);

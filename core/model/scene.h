@@ -44,11 +44,13 @@ struct PolygonOutline {
 struct PatternOutline {
   std::string file;
   std::string piece;
-  PatternPiece shape;
+  PiecePlacement placement;
+  PatternPiece shape;  // placed
   // Where the reader found the file (absolute); not part of the scene's meaning.
   std::string resolved_path;
   friend bool operator==(const PatternOutline& a, const PatternOutline& b) {
-    return a.file == b.file && a.piece == b.piece && a.shape == b.shape;
+    return a.file == b.file && a.piece == b.piece && a.placement == b.placement &&
+           a.shape == b.shape;
   }
 };
 using Outline = std::variant<RectangleOutline, DiskOutline, PolygonOutline, PatternOutline>;

@@ -260,7 +260,7 @@ TEST_F(RenderCli, ExportWritesEveryStepAndACollection) {
   EXPECT_EQ(vtu, States());
   r = RunDrape("export " + Fold() + " -o " + Out("stl") + " --format stl --step last --solid");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = RunDrape("export " + Fold() + " -o " + Out("bad") + " --format dxf");
+  r = RunDrape("export " + Fold() + " -o " + Out("bad") + " --format step");
   EXPECT_NE(r.exit_code, 0);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/io/scene_reader.h"
+#include "core/io/scene_writer.h"
 #include "core/model/fabric_mesh.h"
 #include "core/model/node_selection.h"
 #include "core/model/outline_geometry.h"
@@ -122,6 +123,31 @@ TEST(PatternOutline, GrainGivesTheWarpDirection) {
       ReadIn(dir, PatternScene("p.dxf", "FRONT", "\"grain\"")).material.angle_deg, 30.0, 0.01);
   EXPECT_NEAR(
       ReadIn(dir, PatternScene("p.dxf", "BACK", "\"grain\"")).material.angle_deg, 90.0, 0.01);
+}
+
+TEST(PatternOutline, APlacedPieceTakesItsMarksAndGrainAlong) {
+  TempDir dir("pattern-placed");
+  MakePattern(dir / "p.dxf", "mm");
+  nlohmann::json doc = nlohmann::json::parse(PatternScene("p.dxf", "FRONT", "\"grain\""));
+  doc["fabric"]["outline"]["pattern"]["at"] = {"1 m", 0};
+  doc["fabric"]["outline"]["pattern"]["rotation_deg"] = 90;
+  const Scene turned = ReadIn(dir, doc.dump());
+  // Grain at 30° turned by 90°; notch 2 at (40, 15) cm to (1 m − 15 cm, 40 cm).
+  EXPECT_NEAR(turned.material.angle_deg, 120.0, 0.01);
+  const auto& shape = std::get<PatternOutline>(turned.fabric.outline).shape;
+  EXPECT_NEAR(shape.notches[1][0], 0.85, 1e-12);
+  EXPECT_NEAR(shape.notches[1][1], 0.40, 1e-12);
+  EXPECT_NEAR(OutlineArea(turned.fabric.outline), kFrontAreaCm2 * 1e-4, 1e-12);
+  // Turned over: the grain's x component changes sign, 30° → 150°.
+  doc["fabric"]["outline"]["pattern"].erase("at");
+  doc["fabric"]["outline"]["pattern"].erase("rotation_deg");
+  doc["fabric"]["outline"]["pattern"]["flip"] = true;
+  const Scene flipped = ReadIn(dir, doc.dump());
+  EXPECT_NEAR(flipped.material.angle_deg, 150.0, 0.01);
+  EXPECT_NEAR(std::get<PatternOutline>(flipped.fabric.outline).shape.notches[1][0], -0.40, 1e-12);
+  // The scene writer keeps the placement and "grain".
+  EXPECT_EQ(ReadIn(dir, WriteSceneText(turned)), turned);
+  EXPECT_EQ(ReadIn(dir, WriteSceneText(flipped)), flipped);
 }
 
 TEST(PatternOutline, ErrorsNameTheKey) {

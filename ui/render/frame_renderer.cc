@@ -55,6 +55,7 @@ constexpr double kObstacle[3] = {0.62, 0.66, 0.70};
 constexpr double kSupport[3] = {0.25, 0.25, 0.28};
 constexpr double kGripper[3] = {0.85, 0.15, 0.15};
 constexpr double kPath[3] = {0.10, 0.45, 0.25};
+constexpr double kGrain[3] = {0.10, 0.20, 0.60};  // the warp: dark blue
 
 // Points as small spheres, `radius` [m].
 struct Glyphs {
@@ -123,6 +124,11 @@ struct FrameRenderer::Impl {
   std::unique_ptr<Glyphs> supports, grippers;
   std::vector<int> support_nodes;
   std::vector<Ptr<vtkCaptionActor2D>> probe_labels;
+  // The grain line: points along it located on the mesh, drawn a little
+  // off both faces so that the surface does not hide it.
+  std::vector<ProbePoint> grain_points;
+  Ptr<vtkPoints> grain_line = Ptr<vtkPoints>::New();
+  double grain_offset = 0;
   Ptr<vtkTextActor> overlay = Ptr<vtkTextActor>::New();
   Ptr<vtkActor> ghost = MakeGhostActor();     // hidden until SetGhost
   std::unique_ptr<DrapeShadowActors> shadow;  // the drapemeter's view only
@@ -158,6 +164,7 @@ struct FrameRenderer::Impl {
     AddObstacles();
     AddHeldPoints(0.006 * size);
     if (options.paths) AddPaths(0.012 * size);
+    if (options.grain) AddGrainLine(0.002 * size);
     AddProbes();
     // The drapemeter's shadow lies on its own plane under the hanging part:
     // a grid there would cross it.
@@ -307,6 +314,52 @@ struct FrameRenderer::Impl {
       head->GetProperty()->SetColor(kPath[0], kPath[1], kPath[2]);
       renderer->AddActor(head);
     }
+  }
+
+  void AddGrainLine(double offset) {
+    const auto* pattern = std::get_if<PatternOutline>(&scene.fabric.outline);
+    if (!pattern || !pattern->shape.grain) return;
+    const auto& [from, to] = *pattern->shape.grain;
+    constexpr int kPoints = 24;
+    for (int i = 0; i < kPoints; ++i) {
+      const double t = static_cast<double>(i) / (kPoints - 1);
+      grain_points.push_back(LocateProbe(
+          model.mesh,
+          Probe{"grain", {from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1])}}));
+    }
+    grain_offset = std::max(offset, model.thickness);
+    auto cells = Ptr<vtkCellArray>::New();
+    for (int side = 0; side < 2; ++side) {
+      auto line = Ptr<vtkPolyLine>::New();
+      line->GetPointIds()->SetNumberOfIds(kPoints);
+      for (int i = 0; i < kPoints; ++i) {
+        grain_line->InsertNextPoint(0, 0, 0);
+        line->GetPointIds()->SetId(i, side * kPoints + i);
+      }
+      cells->InsertNextCell(line);
+    }
+    auto data = Ptr<vtkPolyData>::New();
+    data->SetPoints(grain_line);
+    data->SetLines(cells);
+    auto actor = ActorOf(data);
+    actor->GetProperty()->SetColor(kGrain[0], kGrain[1], kGrain[2]);
+    actor->GetProperty()->SetLineWidth(3.0);
+    renderer->AddActor(actor);
+  }
+
+  // The grain line on `state`'s surface, off each face along the director
+  // of the element's first node.
+  void PlaceGrainLine(const ShellState& state) {
+    const int n = static_cast<int>(grain_points.size());
+    for (int i = 0; i < n; ++i) {
+      const ProbePoint& p = grain_points[i];
+      const Eigen::Vector3d at = ProbePosition(model, p, state);
+      const Eigen::Vector3d normal = state.Director(model.mesh.quads(p.element, 0));
+      const Eigen::Vector3d up = at + grain_offset * normal, down = at - grain_offset * normal;
+      grain_line->SetPoint(i, up.data());
+      grain_line->SetPoint(n + i, down.data());
+    }
+    grain_line->Modified();
   }
 
   void AddProbes() {
@@ -477,6 +530,7 @@ struct FrameRenderer::Impl {
       Eigen::Vector3d at = ProbePosition(model, model.probes[p], state);
       probe_labels[p]->SetAttachmentPoint(at.data());
     }
+    if (!grain_points.empty()) PlaceGrainLine(state);
     char text[512];
     if (frame.step == 0)
       std::snprintf(text, sizeof text, "%s\nreference state", scene.name.c_str());
@@ -557,6 +611,10 @@ void FrameRenderer::ClearGhost() {
 }
 bool FrameRenderer::HasGhost() const {
   return impl_->ghost->GetVisibility();
+}
+
+bool FrameRenderer::HasGrainLine() const {
+  return !impl_->grain_points.empty();
 }
 
 const std::optional<DrapeMeasurement>& FrameRenderer::drape() const {

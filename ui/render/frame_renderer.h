@@ -55,8 +55,9 @@ struct RenderOptions {
   UnitSystem units = UnitSystem::kSI;
   bool edges = false;      // mesh lines on the surface
   bool thickness = false;  // both faces, h apart, instead of the midsurface
-  bool floor = true;  // a grid under the part (unless a plane obstacle or the shadow is there)
+  bool floor = true;       // a grid under the part (unless a plane obstacle or the shadow is there)
   bool paths = true;       // gripper paths as polylines with an arrow
+  bool grain = true;       // a pattern piece's grain line (the warp), drawn on the fabric
   bool overlay = true;     // scene name, stage, step, λ
   // The drapemeter's view (a Cusick test, docs/cusick.md): the state's
   // shadow along gravity filled under the part, the disc's and the flat
@@ -129,6 +130,9 @@ class FrameRenderer {
   void SetGhost(const Mesh& mesh, const ShellState& state);
   void ClearGhost();
   bool HasGhost() const;
+  // Whether the fabric carries its grain line (options.grain and a pattern
+  // piece that has one).
+  bool HasGrainLine() const;
 
  private:
   struct Impl;

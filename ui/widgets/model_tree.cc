@@ -46,9 +46,12 @@ QString OutlineSummary(const Fabric& f, UnitSystem system) {
                    return QString("polygon, %1 vertices").arg(p.vertices.size());
                  },
                  [](const PatternOutline& p) {
-                   return QString("pattern piece %1, %2 holes")
-                       .arg(QString::fromStdString(p.piece))
-                       .arg(p.shape.holes.size());
+                   const auto holes = p.shape.holes.size();
+                   return QString("pattern piece %1%2")
+                       .arg(QString::fromStdString(p.piece),
+                            holes == 0   ? QString()
+                            : holes == 1 ? QString(", 1 cut-out")
+                                         : QString(", %1 cut-outs").arg(holes));
                  }},
       f.outline);
 }

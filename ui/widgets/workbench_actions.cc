@@ -17,6 +17,7 @@
 #include "ui/widgets/error_box.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/material_dialog.h"
+#include "ui/widgets/pattern_import_dialog.h"
 #include "ui/widgets/picking_controller.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/unit_settings.h"
@@ -60,6 +61,11 @@ void WorkbenchActions::BuildFileMenu() {
     templates->addAction(QFileInfo(name).completeBaseName(),
                          window_,
                          [this, path = scenes.filePath(name)] { window_->newFromTemplate(path); });
+  file->addAction("&Import pattern…", this, [this] {
+    auto* dialog = new PatternImportDialog(window_->document(), window_);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+  });
   file->addAction("Recover autosaved scene", window_, &MainWindow::recoverAutosave);
 }
 

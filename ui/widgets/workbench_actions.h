@@ -1,5 +1,5 @@
 // The workbench's menus and its toolbar: File (recent files, templates,
-// recovery), Edit (undo, redo, material, picking), View (the timeline's
+// pattern import, recovery), Edit (undo, redo, material, picking), View (the timeline's
 // steps, play, the cameras), Units (UnitSettings::menu) and the toolbar (open, save, the run's
 // controls, the exports); each calls the window or its parts. Which are
 // enabled follows the window's state (update()).

@@ -1,0 +1,100 @@
+// File ▸ Import pattern…, driven as a user would: a DXF written by ezdxf
+// (tests/data/patterns/make_aama_dxf.py), its pieces listed, one placed on
+// the table as the fabric, meshed with its cut-out, and undone.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QUndoStack>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "support/drape_command.h"
+#include "support/temp_dir.h"
+#include "support/test_paths.h"
+#include "ui/render/frame_renderer.h"
+#include "ui/widgets/main_window.h"
+#include "ui/widgets/pattern_import_dialog.h"
+#include "ui/widgets/scene_document.h"
+#include "ui/widgets/view_controller.h"
+#include "widgets/gui_test.h"
+
+namespace drape {
+namespace {
+
+// Area of a quad mesh (each quad as two triangles; exact for planar quads).
+double MeshArea(const ShellModel& model) {
+  double area = 0;
+  const auto& x = model.reference.positions;
+  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
+    const auto q = model.mesh.quads.row(e);
+    const Eigen::Vector3d a = x.row(q(0)), b = x.row(q(1)), c = x.row(q(2)), d = x.row(q(3));
+    area += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
+  }
+  return area;
+}
+
+TEST_F(Widgets, APatternPieceIsImportedPlacedAndUndone) {
+  test::TempDir dir("pattern-import");
+  const std::filesystem::path dxf = dir / "shirt.dxf";
+  const std::string script =
+      (test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py").string();
+  ASSERT_EQ(test::RunCommand("/usr/bin/python3 '" + script + "' '" + dxf.string() + "'").exit_code,
+            0);
+  // A sheet held at its corners, under its weight.
+  std::ofstream(dir / "sheet.json") << R"({"drape_scene": 1,
+    "fabric": {"outline": {"rectangle": {"size": ["30 cm", "30 cm"]}}, "mesh": {"elements": [6, 6]}},
+    "material": {"library": "cotton-twill"},
+    "supports": [{"name": "corners", "select": {"corners": true}}],
+    "stages": [{"name": "weight", "kind": "gravity"}]})";
+  MainWindow window;
+  ASSERT_TRUE(window.openScene(QString::fromStdString((dir / "sheet.json").string())));
+  SceneDocument* doc = window.document();
+  const Scene before = doc->scene();
+
+  PatternImportDialog dialog(doc);
+  dialog.file()->setText(QString::fromStdString(dxf.string()));
+  ASSERT_TRUE(dialog.load()) << dialog.message().toStdString();
+  ASSERT_EQ(dialog.piece()->count(), 2);
+  EXPECT_EQ(dialog.piece()->itemText(0), "FRONT");
+  EXPECT_TRUE(dialog.message().contains("4 notches")) << dialog.message().toStdString();
+  EXPECT_TRUE(dialog.message().contains("grain 30.0°")) << dialog.message().toStdString();
+  dialog.position()->setText("10 cm, 0");
+  dialog.rotation()->setText("90");
+  ASSERT_TRUE(dialog.importPiece()) << dialog.message().toStdString();
+
+  const auto* pattern = std::get_if<PatternOutline>(&doc->scene().fabric.outline);
+  ASSERT_NE(pattern, nullptr);
+  EXPECT_EQ(pattern->piece, "FRONT");
+  // Notch 1 at (10, 0) cm turned by 90° and moved 10 cm along x: (10, 10) cm.
+  EXPECT_NEAR(pattern->shape.notches[0][0], 0.10, 1e-12);
+  EXPECT_NEAR(pattern->shape.notches[0][1], 0.10, 1e-12);
+  // The drawn panel less its 5 × 4 cm cut-out, meshed.
+  ASSERT_NE(doc->model(), nullptr) << doc->modelProblem().toStdString();
+  EXPECT_NEAR(MeshArea(*doc->model()) / ((40 * 30 + 40 + -20) * 1e-4), 1.0, 1e-3);
+
+  // The view draws the piece's grain line on the fabric; the block it
+  // replaced had none.
+  QApplication::processEvents();
+  ASSERT_NE(window.view()->renderer(), nullptr);
+  EXPECT_TRUE(window.view()->renderer()->HasGrainLine());
+
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->scene(), before);
+  QApplication::processEvents();
+  ASSERT_NE(window.view()->renderer(), nullptr);
+  EXPECT_FALSE(window.view()->renderer()->HasGrainLine());
+
+  // A file that is not a pattern says so, and lists nothing.
+  dialog.file()->setText(QString::fromStdString((dir / "missing.dxf").string()));
+  EXPECT_FALSE(dialog.load());
+  EXPECT_TRUE(dialog.message().contains("cannot be opened")) << dialog.message().toStdString();
+  EXPECT_EQ(dialog.piece()->count(), 0);
+}
+
+}  // namespace
+}  // namespace drape
