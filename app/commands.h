@@ -34,6 +34,8 @@ void AddMeasureCommand(CLI::App& app, CommandRunner& runner);
 void AddStudyCommand(CLI::App& app, CommandRunner& runner);
 // Adds `material fit FILE …` and `material list`.
 void AddMaterialCommand(CLI::App& app, CommandRunner& runner);
+// Adds `pattern list FILE [--json]`: the pieces of a DXF-AAMA pattern file.
+void AddPatternCommand(CLI::App& app, CommandRunner& runner);
 // Adds `render INPUT -o PNG …` and `animate RESULT -o MOVIE …` (need VTK).
 void AddRenderCommands(CLI::App& app, CommandRunner& runner);
 // Adds `front DIR [-o PNG]`: a study's speed–accuracy front (needs VTK).

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   drape::app::AddDragCommand(app, runner);
   drape::app::AddMaterialCommand(app, runner);
   drape::app::AddMeasureCommand(app, runner);
+  drape::app::AddPatternCommand(app, runner);
   drape::app::AddStudyCommand(app, runner);
 #if defined(DRAPE_WITH_RENDER) || defined(DRAPE_RENDER_PROGRAM)
   drape::app::AddRenderCommands(app, runner);

@@ -244,8 +244,27 @@ double DistanceToLoop(const PieceLine& loop, const PiecePoint& p) {
   return best;
 }
 
+// Every number a reader computes with must be one: a DXF may hold
+// "1e999", "nan" or 1e308 (finite, but not once in nanometres) where a
+// coordinate belongs.
+void RequireFinite(const RawPiece& raw, double unit, const std::string& where) {
+  auto finite = [&](const PiecePoint& p) {
+    return std::isfinite((p[0] - raw.base[0]) * unit * 1e9) &&
+           std::isfinite((p[1] - raw.base[1]) * unit * 1e9);
+  };
+  bool ok = std::isfinite(raw.base[0]) && std::isfinite(raw.base[1]);
+  for (const Polyline& p : raw.polylines)
+    for (const PiecePoint& q : p.points) ok = ok && finite(q);
+  for (int layer = 0; layer < 14; ++layer) {
+    for (const auto& line : raw.lines[layer]) ok = ok && finite(line[0]) && finite(line[1]);
+    for (const PiecePoint& q : raw.points[layer]) ok = ok && finite(q);
+  }
+  if (!ok) throw DxfPatternError(where + ": a coordinate is not a finite number");
+}
+
 PatternPiece MakePiece(const RawPiece& raw, double unit, const std::filesystem::path& file) {
   const std::string where = file.string() + ": piece '" + raw.name + "'";
+  RequireFinite(raw, unit, where);
   PatternPiece piece;
   piece.name = raw.name;
   std::vector<const Polyline*> cut_lines;

@@ -104,6 +104,29 @@ TEST(PatternCli, ExportsTheOutlineOnTheTableAsDxf) {
   EXPECT_GT(drooped, 0.0);
 }
 
+TEST(PatternCli, ListsThePiecesOfAFile) {
+  TempDir dir("pattern-cli-list");
+  MakePattern(dir / "p.dxf");
+  const CommandResult table = RunCommand("pattern list " + Quote(dir / "p.dxf"));
+  ASSERT_EQ(table.exit_code, 0) << table.output;
+  // FRONT as the script draws it: 40 × 32 cm, 1 240 cm² less a 20 cm² cut-out.
+  EXPECT_NE(table.output.find("FRONT"), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find("1220.0 cm²"), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find("40.0 x 32.0 cm"), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find("30.00 deg"), std::string::npos) << table.output;
+  const CommandResult json = RunCommand("pattern list " + Quote(dir / "p.dxf") + " --json", false);
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const nlohmann::json doc = nlohmann::json::parse(json.output);
+  EXPECT_EQ(doc["unit_m"], 0.0254);
+  ASSERT_EQ(doc["pieces"].size(), 2u);
+  EXPECT_NEAR(doc["pieces"][0]["area_m2"].get<double>(), 0.122, 1e-12);
+  EXPECT_EQ(doc["pieces"][0]["notches_m"].size(), 4u);
+  EXPECT_NEAR(doc["pieces"][1]["grain_deg"].get<double>(), 90.0, 1e-6);
+  const CommandResult bad = RunCommand("pattern list " + Quote(dir / "none.dxf"), true);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("cannot be opened"), std::string::npos) << bad.output;
+}
+
 TEST(PatternCli, ABadPatternFileIsOneMessageAndExitOne) {
   TempDir dir("pattern-cli-bad");
   std::ofstream(dir / "notes.dxf") << "a pattern, but not a DXF\n";

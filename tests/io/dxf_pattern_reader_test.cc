@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "support/drape_command.h"
@@ -105,6 +106,20 @@ TEST(DxfPatternReader, BadFilesSayWhatIsWrong) {
   EXPECT_NE(ErrorOf(MakePattern(dir, "mm", "bulge")).find("arc segments (bulges)"),
             std::string::npos);
   EXPECT_NE(ErrorOf(MakePattern(dir, "none")).find("states no length unit"), std::string::npos);
+
+  // A coordinate beyond any double.
+  std::string bytes;
+  {
+    std::ifstream in(MakePattern(dir, "mm"));
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto at = bytes.find("\n400.0\n");
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at, 7, "\n1e999\n");
+  std::ofstream(dir / "huge.dxf") << bytes;
+  EXPECT_NE(ErrorOf(dir / "huge.dxf").find("piece 'FRONT': a coordinate is not a finite number"),
+            std::string::npos)
+      << ErrorOf(dir / "huge.dxf");
 
   const std::filesystem::path text = dir / "notes.dxf";
   std::ofstream(text) << "a pattern, but not a DXF\n";
