@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "support/drape_command.h"
@@ -18,7 +19,10 @@
 #include "support/test_paths.h"
 #include "ui/render/frame_renderer.h"
 #include "ui/widgets/main_window.h"
+#include "ui/widgets/material_editor.h"
 #include "ui/widgets/pattern_import_dialog.h"
+#include "ui/widgets/property_panel.h"
+#include "ui/widgets/quantity_field.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/view_controller.h"
 #include "widgets/gui_test.h"
@@ -73,6 +77,18 @@ TEST_F(Widgets, APatternPieceIsImportedPlacedAndUndone) {
   // Notch 1 at (10, 0) cm turned by 90° and moved 10 cm along x: (10, 10) cm.
   EXPECT_NEAR(pattern->shape.notches[0][0], 0.10, 1e-12);
   EXPECT_NEAR(pattern->shape.notches[0][1], 0.10, 1e-12);
+  // The warp follows the piece's grain line, 30° turned by 90°.
+  EXPECT_TRUE(doc->scene().material.angle_from_grain);
+  EXPECT_NEAR(doc->scene().material.angle_deg, 120.0, 1e-6);
+  // An angle typed in the material editor replaces the grain's, and stays.
+  QLineEdit* angle = window.properties()->material()->angle()->edit();
+  angle->setText("45 deg");
+  emit angle->editingFinished();
+  EXPECT_FALSE(doc->scene().material.angle_from_grain);
+  EXPECT_NEAR(doc->scene().material.angle_deg, 45.0, 1e-9);
+  EXPECT_NEAR(doc->parse(doc->json()).material.angle_deg, 45.0, 1e-9);
+  doc->undoStack()->undo();
+  EXPECT_TRUE(doc->scene().material.angle_from_grain);
   // The drawn panel less its 5 × 4 cm cut-out, meshed.
   ASSERT_NE(doc->model(), nullptr) << doc->modelProblem().toStdString();
   EXPECT_NEAR(MeshArea(*doc->model()) / ((40 * 30 + 40 + -20) * 1e-4), 1.0, 1e-3);

@@ -110,7 +110,11 @@ void MaterialEditor::ConnectFields() {
   EditBy(e2_, "E₂", Orthotropic([](OrthotropicMembrane& m, double v) { m.e2 = v; }));
   EditBy(nu12_, "ν₁₂", Orthotropic([](OrthotropicMembrane& m, double v) { m.nu12 = v; }));
   EditBy(g12_, "G₁₂", Orthotropic([](OrthotropicMembrane& m, double v) { m.g12 = v; }));
-  EditBy(angle_, "warp angle", [](Scene& s, double v) { s.material.angle_deg = v * 180.0 / M_PI; });
+  // A typed angle replaces one taken from a pattern piece's grain line.
+  EditBy(angle_, "warp angle", [](Scene& s, double v) {
+    s.material.angle_deg = v * 180.0 / M_PI;
+    s.material.angle_from_grain = false;
+  });
   connect(membrane_, &QComboBox::activated, this, [this](int i) { setOrthotropic(i == 1); });
 }
 
@@ -165,6 +169,9 @@ void MaterialEditor::refresh() {
     g12_->setValue(orthotropic->g12, units_);
   }
   angle_->setValue(material.angle_deg * M_PI / 180, QString("%1 deg").arg(material.angle_deg));
+  angle_->setToolTip(material.angle_from_grain
+                         ? "from the pattern piece's grain line; type an angle to set another"
+                         : "the warp's direction from the part's x axis; 45 deg is a bias cut");
   refreshing_ = false;
 }
 

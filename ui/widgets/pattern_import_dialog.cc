@@ -96,11 +96,13 @@ QString PatternImportDialog::message() const {
 
 bool PatternImportDialog::load() {
   piece_->clear();
+  has_grain_.clear();
   try {
     const DxfPattern pattern = ReadDxfPattern(file_->text().toStdString());
     for (const PatternPiece& piece : pattern.pieces) {
       piece_->addItem(QString::fromStdString(piece.name));
       piece_->setItemData(piece_->count() - 1, Summary(piece), Qt::ToolTipRole);
+      has_grain_.push_back(piece.grain.has_value());
     }
     message_->setText(piece_->itemData(0, Qt::ToolTipRole).toString());
     return true;
@@ -130,6 +132,9 @@ bool PatternImportDialog::importPiece() {
     nlohmann::json scene = document_->json();
     scene["fabric"]["outline"] = {{"pattern", pattern}};
     scene["fabric"]["mesh"] = {{"size", TypedQuantity(element_size_->text())}};
+    const int index = piece_->currentIndex();
+    if (index >= 0 && index < static_cast<int>(has_grain_.size()) && has_grain_[index])
+      scene["material"]["angle_deg"] = "grain";
     return ApplyOrSay(document_,
                       message_,
                       QString("import piece %1 of %2")

@@ -7,6 +7,8 @@
 
 #include <QDialog>
 
+#include <vector>
+
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -32,8 +34,8 @@ class PatternImportDialog : public QDialog {
 
   // Reads file() and lists its pieces; false with the reader's message.
   bool load();
-  // The chosen piece as the fabric's outline (one edit); false with the
-  // reason shown.
+  // The chosen piece as the fabric's outline, its grain line (when it has
+  // one) as the warp (one edit); false with the reason shown.
   bool importPiece();
 
  private:
@@ -46,6 +48,7 @@ class PatternImportDialog : public QDialog {
   QComboBox* piece_;
   QCheckBox* flip_;
   QLabel* message_;
+  std::vector<bool> has_grain_;  // per listed piece
 };
 
 }  // namespace drape
