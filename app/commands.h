@@ -40,7 +40,8 @@ void AddPatternCommand(CLI::App& app, CommandRunner& runner);
 void AddRenderCommands(CLI::App& app, CommandRunner& runner);
 // Adds `front DIR [-o PNG]`: a study's speed–accuracy front (needs VTK).
 void AddFrontCommand(CLI::App& app, CommandRunner& runner);
-// Adds `export RESULT -o DIR --format …` (needs VTK).
+// Adds `export RESULT -o DIR --format …` (its surfaces need VTK, its DXF
+// outline does not).
 void AddExportCommand(CLI::App& app, CommandRunner& runner);
 
 // For `run --render-every N`: an observer that renders every `every`-th

@@ -20,9 +20,10 @@ int main(int argc, char** argv) {
   drape::app::AddMeasureCommand(app, runner);
   drape::app::AddPatternCommand(app, runner);
   drape::app::AddStudyCommand(app, runner);
+  // Its DXF outline needs no VTK; its surfaces run in drape-vtk.
+  drape::app::AddExportCommand(app, runner);
 #if defined(DRAPE_WITH_RENDER) || defined(DRAPE_RENDER_PROGRAM)
   drape::app::AddRenderCommands(app, runner);
-  drape::app::AddExportCommand(app, runner);
   drape::app::AddFrontCommand(app, runner);
 #endif
 
