@@ -23,12 +23,6 @@ struct PatternArgs {
   bool json = false;
 };
 
-double Area(const PatternPiece& piece) {
-  PatternOutline outline;
-  outline.shape = piece;
-  return OutlineArea(outline);
-}
-
 Bounds2 Extent(const PatternPiece& piece) {
   return OutlineBounds(PolygonOutline{piece.boundary});
 }
@@ -38,7 +32,7 @@ nlohmann::json AsJson(const DxfPattern& pattern) {
   for (const PatternPiece& p : pattern.pieces) {
     const Bounds2 b = Extent(p);
     nlohmann::json piece{{"name", p.name},
-                         {"area_m2", Area(p)},
+                         {"area_m2", PieceArea(p)},
                          {"size_m", {b.max[0] - b.min[0], b.max[1] - b.min[1]}},
                          {"notches_m", p.notches},
                          {"drill_holes_m", p.drills},
@@ -76,7 +70,7 @@ void PrintTable(const DxfPattern& pattern, const std::string& file) {
     if (p.grain) std::snprintf(grain, sizeof grain, "%.2f deg", GrainAngleDeg(p));
     std::printf("  %-16s %7.1f cm² %16s %7zu %6zu %8zu %10zu  %s\n",
                 p.name.c_str(),
-                Area(p) * 1e4,
+                PieceArea(p) * 1e4,
                 size,
                 p.notches.size(),
                 p.drills.size(),

@@ -11,6 +11,7 @@
 #include <optional>
 #include <regex>
 
+#include "core/model/outline_geometry.h"
 #include "core/model/polygon_checks.h"
 
 namespace drape {
@@ -229,19 +230,6 @@ std::string SelfCrossing(const PieceLine& loop) {
   if (!crossing) return "";
   return "crosses itself: its segments " + std::to_string(crossing->first + 1) + " and " +
          std::to_string(crossing->second + 1) + " (counted from its first point) meet";
-}
-
-// Nearest distance from p to the closed loop.
-double DistanceToLoop(const PieceLine& loop, const PiecePoint& p) {
-  double best = INFINITY;
-  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-    const double dx = loop[i][0] - loop[j][0], dy = loop[i][1] - loop[j][1];
-    const double l2 = dx * dx + dy * dy;
-    double t = l2 > 0 ? ((p[0] - loop[j][0]) * dx + (p[1] - loop[j][1]) * dy) / l2 : 0;
-    t = std::clamp(t, 0.0, 1.0);
-    best = std::min(best, std::hypot(p[0] - loop[j][0] - t * dx, p[1] - loop[j][1] - t * dy));
-  }
-  return best;
 }
 
 // Every number a reader computes with must be one: a DXF may hold

@@ -28,13 +28,6 @@ bool InsidePolygon(const std::vector<Vec2>& v, const Vec2& p) {
   return inside;
 }
 
-double DistanceToLoop(const std::vector<Vec2>& v, const Vec2& p) {
-  double best = INFINITY;
-  for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
-    best = std::min(best, DistanceToSegment(p, v[j], v[i]));
-  return best;
-}
-
 double PolygonArea(const std::vector<Vec2>& v) {
   double twice = 0;
   for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
@@ -53,6 +46,19 @@ Bounds2 VertexBounds(const std::vector<Vec2>& vertices) {
 }
 
 }  // namespace
+
+double DistanceToLoop(const std::vector<Vec2>& loop, const Vec2& p) {
+  double best = INFINITY;
+  for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+    best = std::min(best, DistanceToSegment(p, loop[j], loop[i]));
+  return best;
+}
+
+double PieceArea(const PatternPiece& piece) {
+  double area = PolygonArea(piece.boundary);
+  for (const auto& hole : piece.holes) area -= PolygonArea(hole);
+  return area;
+}
 
 Bounds2 OutlineBounds(const Outline& outline) {
   return std::visit(Overloaded{
@@ -81,11 +87,7 @@ double OutlineArea(const Outline& outline) {
                         [](const RectangleOutline& r) { return r.size[0] * r.size[1]; },
                         [](const DiskOutline& d) { return M_PI * d.radius * d.radius; },
                         [](const PolygonOutline& p) { return PolygonArea(p.vertices); },
-                        [](const PatternOutline& p) {
-                          double area = PolygonArea(p.shape.boundary);
-                          for (const auto& hole : p.shape.holes) area -= PolygonArea(hole);
-                          return area;
-                        },
+                        [](const PatternOutline& p) { return PieceArea(p.shape); },
                     },
                     outline);
 }

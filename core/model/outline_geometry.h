@@ -24,6 +24,12 @@ double OutlineArea(const Outline& outline);
 // the distance to the hole's edge) [m].
 double DistanceToOutline(const Outline& outline, const Vec2& p);
 
+// A pattern piece's area: its cut line's, its cut-outs left out [m²].
+double PieceArea(const PatternPiece& piece);
+
+// Distance from p to the nearest point on the closed loop's edges [m].
+double DistanceToLoop(const std::vector<Vec2>& loop, const Vec2& p);
+
 // The outline's corners: a rectangle's four (counter-clockwise from the
 // lower left) or a polygon's or a pattern piece's cut-line vertices; a disk
 // has none.

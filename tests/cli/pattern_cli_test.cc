@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "support/aama_patterns.h"
 #include "support/finite_outputs.h"
 #include "support/run_cli.h"
 #include "support/temp_dir.h"
@@ -25,11 +26,7 @@ using test::run_cli::RunCommand;
 using test::run_cli::WriteJson;
 
 void MakePattern(const std::filesystem::path& out) {
-  const std::filesystem::path script =
-      test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py";
-  const CommandResult r =
-      test::RunCommand("/usr/bin/python3 " + Quote(script) + " " + Quote(out) + " --units in");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  test::MakeAamaPattern(out, "in");
 }
 
 // The BACK panel (a trapezoid, 36 cm at the bottom, 28 cm at the top, 28
@@ -71,16 +68,6 @@ TEST(PatternCli, RunsAPieceAndItsResultReadsBackFromElsewhere) {
   EXPECT_EQ(again.exit_code, 0) << again.output;
 }
 
-// ezdxf's reading (tests/data/patterns/describe_dxf.py) of a DXF file.
-nlohmann::json Described(const std::filesystem::path& file) {
-  const std::filesystem::path script =
-      test::SourceDir() / "tests" / "data" / "patterns" / "describe_dxf.py";
-  const CommandResult r = test::RunCommand("/usr/bin/python3 " + Quote(script) + " " + Quote(file),
-                                           test::Captured::kStdout);
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return nlohmann::json::parse(r.output);
-}
-
 TEST(PatternCli, ExportsTheOutlineOnTheTableAsDxf) {
   TempDir dir("pattern-cli-dxf");
   MakePattern(dir / "p.dxf");
@@ -92,13 +79,13 @@ TEST(PatternCli, ExportsTheOutlineOnTheTableAsDxf) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   // The reference: the trapezoid as drawn, (36 + 28) / 2 × 28 cm², in mm.
-  const nlohmann::json flat = Described(dir / "0" / "outline-step-0.dxf");
+  const nlohmann::json flat = test::DescribedByEzdxf(dir / "0" / "outline-step-0.dxf");
   EXPECT_EQ(flat["insunits"], 4);
   EXPECT_NEAR(flat["pieces"]["BACK"]["cut_area"].get<double>(), 32.0 * 28.0 * 100.0, 1e-6);
   // Hanging over its clamped hem the panel's shadow on the table shrinks.
   std::filesystem::path last;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "last")) last = entry.path();
-  const double drooped = Described(last)["pieces"]["BACK"]["cut_area"].get<double>();
+  const double drooped = test::DescribedByEzdxf(last)["pieces"]["BACK"]["cut_area"].get<double>();
   EXPECT_TRUE(std::isfinite(drooped));
   EXPECT_LT(drooped, 32.0 * 28.0 * 100.0);
   EXPECT_GT(drooped, 0.0);

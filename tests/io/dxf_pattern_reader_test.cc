@@ -10,6 +10,7 @@
 #include <iterator>
 #include <string>
 
+#include "support/aama_patterns.h"
 #include "support/drape_command.h"
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
@@ -23,14 +24,7 @@ using test::TempDir;
 std::filesystem::path MakePattern(const TempDir& dir,
                                   const std::string& units,
                                   const std::string& variant = "good") {
-  const std::filesystem::path out = dir / (units + "-" + variant + ".dxf");
-  const std::string script =
-      (test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py").string();
-  const test::CommandResult r =
-      test::RunCommand("/usr/bin/python3 '" + script + "' '" + out.string() + "' --units " + units +
-                       " --variant " + variant);
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return out;
+  return test::MakeAamaPattern(dir / (units + "-" + variant + ".dxf"), units, variant);
 }
 
 std::string ErrorOf(const std::filesystem::path& file) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/io/dxf_pattern_reader.h"
+#include "support/aama_patterns.h"
 #include "support/drape_command.h"
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
@@ -31,19 +32,10 @@ PatternPiece Panel() {
   return p;
 }
 
-nlohmann::json Described(const std::filesystem::path& file) {
-  const std::string script =
-      (test::SourceDir() / "tests" / "data" / "patterns" / "describe_dxf.py").string();
-  const test::CommandResult r = test::RunCommand(
-      "/usr/bin/python3 '" + script + "' '" + file.string() + "'", test::Captured::kStdout);
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return nlohmann::json::parse(r.output);
-}
-
 TEST(DxfPatternWriter, EzdxfReadsThePieceInMillimetres) {
   TempDir dir("dxf-writer");
   WriteDxfPattern(dir / "out.dxf", {Panel()});
-  const nlohmann::json d = Described(dir / "out.dxf");
+  const nlohmann::json d = test::DescribedByEzdxf(dir / "out.dxf");
   EXPECT_EQ(d["insunits"], 4);
   const nlohmann::json& panel = d["pieces"]["PANEL"];
   EXPECT_EQ(panel["cut_points"], 4);

@@ -13,6 +13,7 @@
 #include "core/model/node_selection.h"
 #include "core/model/outline_geometry.h"
 #include "core/model/scene_error.h"
+#include "support/aama_patterns.h"
 #include "support/drape_command.h"
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
@@ -25,17 +26,6 @@ using test::TempDir;
 // FRONT as the script draws it [cm]: the cut line's shoelace area minus the
 // 5 × 4 cm cut-out.
 constexpr double kFrontAreaCm2 = 40 * 30 + 0.5 * 40 * 2 - 5 * 4;
-
-void MakePattern(const std::filesystem::path& out,
-                 const std::string& units,
-                 const std::string& variant = "good") {
-  const std::string script =
-      (test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py").string();
-  const test::CommandResult r =
-      test::RunCommand("/usr/bin/python3 '" + script + "' '" + out.string() + "' --units " + units +
-                       " --variant " + variant);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-}
 
 // A scene cutting `piece` from `file` (next to the scene).
 std::string PatternScene(const std::string& file,
@@ -73,7 +63,7 @@ std::string SceneErrorOf(const TempDir& dir, const std::string& text) {
 
 TEST(PatternOutline, MeshesThePieceWithItsCutOutOpen) {
   TempDir dir("pattern-mesh");
-  MakePattern(dir / "p.dxf", "mm");
+  test::MakeAamaPattern(dir / "p.dxf", "mm");
   const Scene scene = ReadIn(dir, PatternScene("p.dxf", "FRONT"));
   EXPECT_NEAR(OutlineArea(scene.fabric.outline), kFrontAreaCm2 * 1e-4, 1e-12);
   const Mesh mesh = MeshFabric(scene.fabric);
@@ -90,8 +80,8 @@ TEST(PatternOutline, MeshesThePieceWithItsCutOutOpen) {
 
 TEST(PatternOutline, InchesAndMillimetresGiveTheSameMesh) {
   TempDir dir("pattern-units");
-  MakePattern(dir / "mm.dxf", "mm");
-  MakePattern(dir / "in.dxf", "in");
+  test::MakeAamaPattern(dir / "mm.dxf", "mm");
+  test::MakeAamaPattern(dir / "in.dxf", "in");
   const Mesh mm = MeshFabric(ReadIn(dir, PatternScene("mm.dxf", "FRONT")).fabric);
   const Mesh in = MeshFabric(ReadIn(dir, PatternScene("in.dxf", "FRONT")).fabric);
   ASSERT_EQ(mm.NodeCount(), in.NodeCount());
@@ -102,7 +92,7 @@ TEST(PatternOutline, InchesAndMillimetresGiveTheSameMesh) {
 
 TEST(PatternOutline, NotchPicksTheNodeNearestIt) {
   TempDir dir("pattern-notch");
-  MakePattern(dir / "p.dxf", "mm");
+  test::MakeAamaPattern(dir / "p.dxf", "mm");
   const Scene scene = ReadIn(dir, PatternScene("p.dxf", "FRONT"));
   const Mesh mesh = MeshFabric(scene.fabric);
   const std::vector<int> nodes = SelectNodes(scene.supports[0].select, mesh, scene.fabric.outline);
@@ -118,7 +108,7 @@ TEST(PatternOutline, NotchPicksTheNodeNearestIt) {
 
 TEST(PatternOutline, GrainGivesTheWarpDirection) {
   TempDir dir("pattern-grain");
-  MakePattern(dir / "p.dxf", "in");
+  test::MakeAamaPattern(dir / "p.dxf", "in");
   EXPECT_NEAR(
       ReadIn(dir, PatternScene("p.dxf", "FRONT", "\"grain\"")).material.angle_deg, 30.0, 0.01);
   EXPECT_NEAR(
@@ -127,7 +117,7 @@ TEST(PatternOutline, GrainGivesTheWarpDirection) {
 
 TEST(PatternOutline, APlacedPieceTakesItsMarksAndGrainAlong) {
   TempDir dir("pattern-placed");
-  MakePattern(dir / "p.dxf", "mm");
+  test::MakeAamaPattern(dir / "p.dxf", "mm");
   nlohmann::json doc = nlohmann::json::parse(PatternScene("p.dxf", "FRONT", "\"grain\""));
   doc["fabric"]["outline"]["pattern"]["at"] = {"1 m", 0};
   doc["fabric"]["outline"]["pattern"]["rotation_deg"] = 90;
@@ -152,9 +142,9 @@ TEST(PatternOutline, APlacedPieceTakesItsMarksAndGrainAlong) {
 
 TEST(PatternOutline, ErrorsNameTheKey) {
   TempDir dir("pattern-errors");
-  MakePattern(dir / "p.dxf", "mm");
-  MakePattern(dir / "no-grain.dxf", "mm", "no-grain");
-  MakePattern(dir / "open.dxf", "mm", "open");
+  test::MakeAamaPattern(dir / "p.dxf", "mm");
+  test::MakeAamaPattern(dir / "no-grain.dxf", "mm", "no-grain");
+  test::MakeAamaPattern(dir / "open.dxf", "mm", "open");
   std::string e = SceneErrorOf(dir, PatternScene("p.dxf", "SLEEVE"));
   EXPECT_NE(e.find("fabric.outline.pattern.piece: p.dxf: no piece 'SLEEVE'; the file has "
                    "'FRONT', 'BACK'"),

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/io/dxf_pattern_reader.h"
+#include "support/aama_patterns.h"
 #include "support/drape_command.h"
 #include "support/fuzz_files.h"
 #include "support/fuzz_input.h"
@@ -32,15 +33,9 @@ FuzzAlphabet DxfAlphabet() {
 // Seeds written by ezdxf (tests/data/patterns/make_aama_dxf.py).
 std::vector<std::string> DxfSeeds(const test::TempDir& dir) {
   std::vector<std::string> seeds;
-  const std::string script =
-      (test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py").string();
-  for (const char* units : {"mm", "text-english"}) {
-    const std::filesystem::path out = dir / (std::string(units) + ".dxf");
-    const test::CommandResult r = test::RunCommand("/usr/bin/python3 '" + script + "' '" +
-                                                   out.string() + "' --units " + units);
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-    seeds.push_back(test::ReadBytes(out));
-  }
+  for (const char* units : {"mm", "text-english"})
+    seeds.push_back(
+        test::ReadBytes(test::MakeAamaPattern(dir / (std::string(units) + ".dxf"), units)));
   return seeds;
 }
 

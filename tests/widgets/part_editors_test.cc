@@ -34,6 +34,7 @@
 #include "core/io/scene_reader.h"
 #include "core/model/obstacle_anchor.h"
 #include "support/editor_input.h"
+#include "support/mesh_area.h"
 #include "support/test_paths.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/holds_panel.h"
@@ -60,17 +61,7 @@ using test::Drag;
 using test::OnScreen;
 using test::StripFold;
 
-// Area of a quad mesh (each quad as two triangles; exact for planar quads).
-double MeshArea(const ShellModel& model) {
-  double area = 0;
-  const auto& x = model.reference.positions;
-  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
-    const auto q = model.mesh.quads.row(e);
-    const Eigen::Vector3d a = x.row(q(0)), b = x.row(q(1)), c = x.row(q(2)), d = x.row(q(3));
-    area += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
-  }
-  return area;
-}
+using test::MeshArea;
 
 TEST_F(Widgets, OutlinesAreEditedAsRectangleDiskOrPolygon) {
   MainWindow window;

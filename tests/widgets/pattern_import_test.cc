@@ -14,7 +14,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/aama_patterns.h"
 #include "support/drape_command.h"
+#include "support/mesh_area.h"
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
 #include "ui/render/frame_renderer.h"
@@ -30,25 +32,12 @@
 namespace drape {
 namespace {
 
-// Area of a quad mesh (each quad as two triangles; exact for planar quads).
-double MeshArea(const ShellModel& model) {
-  double area = 0;
-  const auto& x = model.reference.positions;
-  for (int e = 0; e < model.mesh.ElementCount(); ++e) {
-    const auto q = model.mesh.quads.row(e);
-    const Eigen::Vector3d a = x.row(q(0)), b = x.row(q(1)), c = x.row(q(2)), d = x.row(q(3));
-    area += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
-  }
-  return area;
-}
+using test::MeshArea;
 
 TEST_F(Widgets, APatternPieceIsImportedPlacedAndUndone) {
   test::TempDir dir("pattern-import");
   const std::filesystem::path dxf = dir / "shirt.dxf";
-  const std::string script =
-      (test::SourceDir() / "tests" / "data" / "patterns" / "make_aama_dxf.py").string();
-  ASSERT_EQ(test::RunCommand("/usr/bin/python3 '" + script + "' '" + dxf.string() + "'").exit_code,
-            0);
+  test::MakeAamaPattern(dxf);
   // A sheet held at its corners, under its weight.
   std::ofstream(dir / "sheet.json") << R"({"drape_scene": 1,
     "fabric": {"outline": {"rectangle": {"size": ["30 cm", "30 cm"]}}, "mesh": {"elements": [6, 6]}},

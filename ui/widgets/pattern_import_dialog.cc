@@ -25,11 +25,7 @@ namespace {
 
 // "FRONT — 1 220 cm², 4 notches, grain 30°" for the piece list's tooltip.
 QString Summary(const PatternPiece& piece) {
-  const double area = OutlineArea(PolygonOutline{piece.boundary}) - [&] {
-    double holes = 0;
-    for (const auto& h : piece.holes) holes += OutlineArea(PolygonOutline{h});
-    return holes;
-  }();
+  const double area = PieceArea(piece);
   QString text = QString("%1 cm², %2 notches, %3 drill holes")
                      .arg(area * 1e4, 0, 'f', 1)
                      .arg(piece.notches.size())
