@@ -14,10 +14,19 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
                   "nodes",
                   "notch",
                   "drill",
+                  "internal_line",
                   "tolerance"});
   Selection s;
-  switch (
-      c.OneOf({"point", "line", "box", "circle", "corners", "edge", "nodes", "notch", "drill"})) {
+  switch (c.OneOf({"point",
+                   "line",
+                   "box",
+                   "circle",
+                   "corners",
+                   "edge",
+                   "nodes",
+                   "notch",
+                   "drill",
+                   "internal_line"})) {
     case 0:
       s.shape = PointSelection{c["point"].QuantityVec2(dim::kLength)};
       break;
@@ -54,10 +63,14 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
       break;
     }
     case 7:
-    case 8: {
-      const bool notch = c.Has("notch");
-      auto k = c[notch ? "notch" : "drill"];
-      PatternMarkSelection mark{notch ? PatternMark::kNotch : PatternMark::kDrill, k.Integer()};
+    case 8:
+    case 9: {
+      const char* key = c.Has("notch") ? "notch" : c.Has("drill") ? "drill" : "internal_line";
+      const PatternMark kind = c.Has("notch")   ? PatternMark::kNotch
+                               : c.Has("drill") ? PatternMark::kDrill
+                                                : PatternMark::kInternalLine;
+      auto k = c[key];
+      PatternMarkSelection mark{kind, k.Integer()};
       if (mark.index < 1) k.Fail("counts from 1 (the first in the pattern file)");
       s.shape = mark;
       break;

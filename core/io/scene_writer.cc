@@ -113,34 +113,33 @@ json ToJson(const Material& m) {
 }
 
 json ToJson(const Selection& s) {
-  json j =
-      std::visit(Overloaded{
-                     [](const PointSelection& p) {
-                       return json{{"point", p.at}};
-                     },
-                     [](const LineSelection& l) {
-                       return json{{"line", {l.from, l.to}}};
-                     },
-                     [](const BoxSelection& b) {
-                       return json{{"box", {b.min, b.max}}};
-                     },
-                     [](const CircleSelection& c) {
-                       return json{{"circle", {{"center", c.center}, {"radius", c.radius}}}};
-                     },
-                     [](const CornersSelection&) {
-                       return json{{"corners", true}};
-                     },
-                     [](const EdgeSelection& e) {
-                       return json{{"edge", ToString(e.side)}};
-                     },
-                     [](const NodesSelection& n) {
-                       return json{{"nodes", n.nodes}};
-                     },
-                     [](const PatternMarkSelection& m) {
-                       return json{{m.mark == PatternMark::kNotch ? "notch" : "drill", m.index}};
-                     },
-                 },
-                 s.shape);
+  json j = std::visit(Overloaded{
+                          [](const PointSelection& p) {
+                            return json{{"point", p.at}};
+                          },
+                          [](const LineSelection& l) {
+                            return json{{"line", {l.from, l.to}}};
+                          },
+                          [](const BoxSelection& b) {
+                            return json{{"box", {b.min, b.max}}};
+                          },
+                          [](const CircleSelection& c) {
+                            return json{{"circle", {{"center", c.center}, {"radius", c.radius}}}};
+                          },
+                          [](const CornersSelection&) {
+                            return json{{"corners", true}};
+                          },
+                          [](const EdgeSelection& e) {
+                            return json{{"edge", ToString(e.side)}};
+                          },
+                          [](const NodesSelection& n) {
+                            return json{{"nodes", n.nodes}};
+                          },
+                          [](const PatternMarkSelection& m) {
+                            return json{{PatternMarkKey(m.mark), m.index}};
+                          },
+                      },
+                      s.shape);
   if (s.tolerance) j["tolerance"] = *s.tolerance;
   return j;
 }

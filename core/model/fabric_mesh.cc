@@ -16,6 +16,26 @@ std::vector<Eigen::Vector2d> Points(const std::vector<Vec2>& vertices) {
   return points;
 }
 
+// What a piece's mesh follows: its cut-outs open, element edges along its
+// internal lines, and a node at each notch and drill hole, so that the
+// selections naming them pick the very point.
+MeshFeatures PieceFeatures(const PatternPiece& piece) {
+  MeshFeatures features;
+  for (const auto& hole : piece.holes) features.holes.push_back(Points(hole));
+  for (std::size_t k = 0; k < piece.internal_lines.size(); ++k)
+    features.lines.push_back(
+        {Points(piece.internal_lines[k]), "internal line " + std::to_string(k + 1) + " (layer 8)"});
+  for (std::size_t k = 0; k < piece.notches.size(); ++k) {
+    const auto& p = piece.notches[k];
+    features.points.push_back({{p[0], p[1]}, "notch " + std::to_string(k + 1)});
+  }
+  for (std::size_t k = 0; k < piece.drills.size(); ++k) {
+    const auto& p = piece.drills[k];
+    features.points.push_back({{p[0], p[1]}, "drill hole " + std::to_string(k + 1)});
+  }
+  return features;
+}
+
 }  // namespace
 
 std::array<int, 2> RectangleElementCounts(const RectangleOutline& rectangle, double element_size) {
@@ -39,9 +59,8 @@ Mesh MeshFabric(const Fabric& fabric) {
       mesh = MeshPolygon(Points(p->vertices), *fabric.mesh.size, fabric.elevation);
     } else {
       const PatternPiece& piece = std::get<PatternOutline>(fabric.outline).shape;
-      std::vector<std::vector<Eigen::Vector2d>> holes;
-      for (const auto& hole : piece.holes) holes.push_back(Points(hole));
-      mesh = MeshPolygon(Points(piece.boundary), *fabric.mesh.size, fabric.elevation, holes);
+      mesh = MeshPolygon(
+          Points(piece.boundary), *fabric.mesh.size, fabric.elevation, PieceFeatures(piece));
     }
   } catch (const MeshError& e) {
     const bool shaped = std::holds_alternative<PolygonOutline>(fabric.outline) ||

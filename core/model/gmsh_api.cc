@@ -45,6 +45,7 @@ GmshApi Load() {
   Bind(library, "gmshModelGeoAddPlaneSurface", api.GeoAddPlaneSurface);
   Bind(library, "gmshModelGeoMeshSetRecombine", api.GeoMeshSetRecombine);
   Bind(library, "gmshModelGeoSynchronize", api.GeoSynchronize);
+  Bind(library, "gmshModelMeshEmbed", api.MeshEmbed);
   Bind(library, "gmshModelMeshGenerate", api.MeshGenerate);
   Bind(library, "gmshModelMeshGetNodes", api.MeshGetNodes);
   Bind(library, "gmshModelMeshGetElements", api.MeshGetElements);

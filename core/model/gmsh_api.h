@@ -25,6 +25,7 @@ struct GmshApi {
   int (*GeoAddPlaneSurface)(int* wires, std::size_t n, int tag, int* ierr);
   void (*GeoMeshSetRecombine)(int dim, int tag, double angle, int* ierr);
   void (*GeoSynchronize)(int* ierr);
+  void (*MeshEmbed)(int dim, int* tags, std::size_t tags_n, int in_dim, int in_tag, int* ierr);
   void (*MeshGenerate)(int dim, int* ierr);
   void (*MeshGetNodes)(std::size_t** tags,
                        std::size_t* tags_n,

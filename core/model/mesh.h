@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/model/planar_graph.h"
+
 namespace drape {
 
 // Bilinear-quad mesh. Node numbering and element numbering are deterministic
@@ -33,11 +35,14 @@ Mesh MeshRectangle(
 // element edge `element_size`, lying in the plane z = elevation. Throws MeshError.
 Mesh MeshDisk(double radius, const Eigen::Vector2d& center, double element_size, double elevation);
 // `outline` is a simple polygon, either orientation, not closed (last != first);
-// each of `holes` likewise, inside it and apart from it and from each other.
+// each of `features.holes` likewise, inside it and apart from it and from
+// each other. Element edges follow `features.lines` and a node sits on each
+// of `features.points`, moved onto the boundary or a line within a quarter
+// of element_size of it (planar_graph.h).
 Mesh MeshPolygon(const std::vector<Eigen::Vector2d>& outline,
                  double element_size,
                  double elevation,
-                 const std::vector<std::vector<Eigen::Vector2d>>& holes = {});
+                 const MeshFeatures& features = {});
 
 // Sum of the quads' areas projected on the xy plane [m²] (signed: a quad
 // numbered clockwise counts negative).

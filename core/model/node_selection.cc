@@ -30,13 +30,6 @@ int NearestNode(const Mesh& mesh, const Vec2& p) {
   return best;
 }
 
-double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  double dx = b[0] - a[0], dy = b[1] - a[1];
-  double t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy);
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
-}
-
 std::string Length(double x) {
   std::ostringstream s;
   s.precision(6);
@@ -141,18 +134,29 @@ std::vector<int> SelectNodes(const Selection& selection, const Mesh& mesh, const
           },
           [&](const PatternMarkSelection& m) {
             const auto* pattern = std::get_if<PatternOutline>(&outline);
-            const char* what = m.mark == PatternMark::kNotch ? "notch" : "drill hole";
+            const std::string what = PatternMarkName(m.mark);
             if (!pattern)
-              throw SelectionError(std::string("a ") + what +
+              throw SelectionError("a " + what +
                                    " is a pattern piece's; this fabric's outline is not one");
-            const auto& marks =
-                m.mark == PatternMark::kNotch ? pattern->shape.notches : pattern->shape.drills;
-            if (m.index > static_cast<int>(marks.size()))
-              throw SelectionError(
-                  std::string(what) + " " + std::to_string(m.index) + " does not exist; piece '" +
-                  pattern->piece + "' has " + std::to_string(marks.size()) + " " + what +
-                  (m.mark == PatternMark::kNotch ? "es" : "s") +
-                  (marks.empty() ? "" : " (1 to " + std::to_string(marks.size()) + ")"));
+            const PatternPiece& piece = pattern->shape;
+            const std::size_t count = m.mark == PatternMark::kNotch   ? piece.notches.size()
+                                      : m.mark == PatternMark::kDrill ? piece.drills.size()
+                                                                      : piece.internal_lines.size();
+            if (m.index > static_cast<int>(count))
+              throw SelectionError(what + " " + std::to_string(m.index) +
+                                   " does not exist; piece '" + pattern->piece + "' has " +
+                                   std::to_string(count) + " " + what +
+                                   (m.mark == PatternMark::kNotch ? "es" : "s") +
+                                   (count == 0 ? "" : " (1 to " + std::to_string(count) + ")"));
+            if (m.mark == PatternMark::kInternalLine) {
+              const PieceLine& line = piece.internal_lines[m.index - 1];
+              return NodesWhere(mesh, [&](const Vec2& q) {
+                for (std::size_t i = 0; i + 1 < line.size(); ++i)
+                  if (DistanceToSegment(q, line[i], line[i + 1]) <= tol) return true;
+                return false;
+              });
+            }
+            const auto& marks = m.mark == PatternMark::kNotch ? piece.notches : piece.drills;
             return std::vector<int>{NearestNode(mesh, marks[m.index - 1])};
           },
       },

@@ -8,14 +8,6 @@
 namespace drape {
 namespace {
 
-double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  double dx = b[0] - a[0], dy = b[1] - a[1];
-  double length2 = dx * dx + dy * dy;
-  double t = length2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
-}
-
 // Even-odd rule: a ray to +x crosses the boundary an odd number of times.
 bool InsidePolygon(const std::vector<Vec2>& v, const Vec2& p) {
   bool inside = false;
@@ -46,6 +38,14 @@ Bounds2 VertexBounds(const std::vector<Vec2>& vertices) {
 }
 
 }  // namespace
+
+double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  double dx = b[0] - a[0], dy = b[1] - a[1];
+  double length2 = dx * dx + dy * dy;
+  double t = length2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
+}
 
 double DistanceToLoop(const std::vector<Vec2>& loop, const Vec2& p) {
   double best = INFINITY;

@@ -27,6 +27,9 @@ double DistanceToOutline(const Outline& outline, const Vec2& p);
 // A pattern piece's area: its cut line's, its cut-outs left out [m²].
 double PieceArea(const PatternPiece& piece);
 
+// Distance from p to the segment ab [m].
+double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
 // Distance from p to the nearest point on the closed loop's edges [m].
 double DistanceToLoop(const std::vector<Vec2>& loop, const Vec2& p);
 

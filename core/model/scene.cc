@@ -40,6 +40,30 @@ const char* ToString(Side side) {
   return "?";
 }
 
+const char* PatternMarkKey(PatternMark mark) {
+  switch (mark) {
+    case PatternMark::kNotch:
+      return "notch";
+    case PatternMark::kDrill:
+      return "drill";
+    case PatternMark::kInternalLine:
+      return "internal_line";
+  }
+  return "?";
+}
+
+const char* PatternMarkName(PatternMark mark) {
+  switch (mark) {
+    case PatternMark::kNotch:
+      return "notch";
+    case PatternMark::kDrill:
+      return "drill hole";
+    case PatternMark::kInternalLine:
+      return "internal line";
+  }
+  return "?";
+}
+
 const char* ToString(Interpolation interpolation) {
   return interpolation == Interpolation::kLinear ? "linear" : "smooth";
 }

@@ -173,9 +173,10 @@ struct NodesSelection {
   std::vector<int> nodes;
   friend bool operator==(const NodesSelection&, const NodesSelection&) = default;
 };
-// The node nearest a pattern piece's K-th notch or drill hole
-// (fabric.outline.pattern), K counted from 1 in the file's order.
-enum class PatternMark { kNotch, kDrill };
+// The node nearest a pattern piece's K-th notch or drill hole, or every node
+// on its K-th internal line (fabric.outline.pattern), K counted from 1 in the
+// file's order.
+enum class PatternMark { kNotch, kDrill, kInternalLine };
 struct PatternMarkSelection {
   PatternMark mark = PatternMark::kNotch;
   int index = 1;
@@ -395,6 +396,10 @@ const char* ToString(StageKind kind);
 const char* ToString(StepControl control);
 const char* ToString(Fixity fixity);
 const char* ToString(Side side);
+// The selection's key in a scene file ("notch", "drill", "internal_line")
+// and its name in messages ("notch", "drill hole", "internal line").
+const char* PatternMarkKey(PatternMark mark);
+const char* PatternMarkName(PatternMark mark);
 const char* ToString(Interpolation interpolation);
 const char* ToString(ImperfectionPattern pattern);
 const char* ToString(Branching branching);

@@ -16,7 +16,7 @@ TEST(ProbeLocation, EveryPointOfAPolygonMapsBackOntoItself) {
   const std::vector<Eigen::Vector2d> outline{{0, 0}, {0.4, 0}, {0.4, 0.3}, {0.2, 0.32}, {0, 0.3}};
   const std::vector<Eigen::Vector2d> hole{{0.1, 0.1}, {0.15, 0.1}, {0.15, 0.14}, {0.1, 0.14}};
   ShellModel model;
-  model.mesh = MeshPolygon(outline, 0.015, 0.0, {hole});
+  model.mesh = MeshPolygon(outline, 0.015, 0.0, {.holes = {hole}});
   ShellState state;
   state.positions = model.mesh.positions;
   int checked = 0;

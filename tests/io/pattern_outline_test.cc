@@ -15,6 +15,7 @@
 #include "core/model/scene_error.h"
 #include "support/aama_patterns.h"
 #include "support/drape_command.h"
+#include "support/edge_chain.h"
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
 
@@ -106,6 +107,32 @@ TEST(PatternOutline, NotchPicksTheNodeNearestIt) {
   EXPECT_EQ(nodes[0], nearest);
 }
 
+TEST(PatternOutline, MarksAreNodesAndTheFoldLineIsAChainOfEdges) {
+  TempDir dir("pattern-marks");
+  test::MakeAamaPattern(dir / "p.dxf", "in");
+  nlohmann::json doc = nlohmann::json::parse(PatternScene("p.dxf", "FRONT"));
+  doc["supports"][0]["select"] = {{"internal_line", 1}};
+  const Scene scene = ReadIn(dir, doc.dump());
+  const Mesh mesh = MeshFabric(scene.fabric);
+  // The script's notches and drill holes [cm], each now a node.
+  for (const auto& p : {Eigen::Vector2d(10, 0),
+                        Eigen::Vector2d(40, 15),
+                        Eigen::Vector2d(30, 31),
+                        Eigen::Vector2d(0, 20),
+                        Eigen::Vector2d(25, 20),
+                        Eigen::Vector2d(30, 8)})
+    EXPECT_LE(test::DistanceToNearestNode(mesh, 1e-2 * p), 1e-9) << p.transpose();
+  // The fold line, (20, 0) to the peak (20, 32) cm: a chain of element
+  // edges, and {"internal_line": 1} picks exactly its nodes.
+  const std::vector<int> chain = test::ExpectEdgeChain(mesh, {0.20, 0}, {0.20, 0.32}, 1e-9);
+  std::vector<int> sorted = chain;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(SelectNodes(scene.supports[0].select, mesh, scene.fabric.outline), sorted);
+  EXPECT_GE(chain.size(), static_cast<std::size_t>(32 / 1.5));
+  // The writer keeps the selection.
+  EXPECT_EQ(ReadIn(dir, WriteSceneText(scene)), scene);
+}
+
 TEST(PatternOutline, GrainGivesTheWarpDirection) {
   TempDir dir("pattern-grain");
   test::MakeAamaPattern(dir / "p.dxf", "in");
@@ -177,6 +204,17 @@ TEST(PatternOutline, ErrorsNameTheKey) {
     ADD_FAILURE() << "no error for notch 5 of 4";
   } catch (const SelectionError& error) {
     EXPECT_STREQ(error.what(), "notch 5 does not exist; piece 'FRONT' has 4 notches (1 to 4)");
+  }
+  // BACK has no internal line.
+  nlohmann::json back = nlohmann::json::parse(PatternScene("p.dxf", "BACK"));
+  back["supports"][0]["select"] = {{"internal_line", 1}};
+  const Scene back_scene = ReadIn(dir, back.dump());
+  try {
+    SelectNodes(
+        back_scene.supports[0].select, MeshFabric(back_scene.fabric), back_scene.fabric.outline);
+    ADD_FAILURE() << "no error for an internal line BACK lacks";
+  } catch (const SelectionError& error) {
+    EXPECT_STREQ(error.what(), "internal line 1 does not exist; piece 'BACK' has 0 internal lines");
   }
 }
 

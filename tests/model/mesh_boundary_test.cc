@@ -31,7 +31,7 @@ TEST(MeshBoundary, ARectangleHasOneCounterClockwiseLoop) {
 TEST(MeshBoundary, AHoleIsASecondClockwiseLoop) {
   const std::vector<Eigen::Vector2d> outer{{0, 0}, {0.4, 0}, {0.4, 0.3}, {0, 0.3}};
   const std::vector<Eigen::Vector2d> hole{{0.1, 0.1}, {0.15, 0.1}, {0.15, 0.14}, {0.1, 0.14}};
-  const Mesh mesh = MeshPolygon(outer, 0.02, 0.0, {hole});
+  const Mesh mesh = MeshPolygon(outer, 0.02, 0.0, {.holes = {hole}});
   const PatternPiece outline = ProjectedOutline(mesh, mesh.positions, "P", {{0.4, 0.15}});
   ASSERT_EQ(outline.holes.size(), 1u);
   EXPECT_NEAR(SignedArea(outline.boundary), 0.4 * 0.3, 1e-12);

@@ -39,8 +39,7 @@ QString DescribeSelection(const Selection& selection, UnitSystem system) {
           },
           [](const NodesSelection& n) { return QString("%1 nodes").arg(n.nodes.size()); },
           [](const PatternMarkSelection& m) {
-            return QString(m.mark == PatternMark::kNotch ? "notch %1" : "drill hole %1")
-                .arg(m.index);
+            return QString("%1 %2").arg(PatternMarkName(m.mark)).arg(m.index);
           },
       },
       selection.shape);
