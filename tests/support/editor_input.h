@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 #include <QApplication>

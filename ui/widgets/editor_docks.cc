@@ -87,6 +87,7 @@ void EditorDocks::DockEditors() {
   connect(stages_dock, &QDockWidget::visibilityChanged, this, &EditorDocks::stagesShown);
   connect(grippers_dock, &QDockWidget::visibilityChanged, this, &EditorDocks::grippersShown);
   connect(obstacles_dock, &QDockWidget::visibilityChanged, this, &EditorDocks::obstaclesShown);
+  connect(properties_dock, &QDockWidget::visibilityChanged, this, &EditorDocks::propertiesShown);
 }
 
 void EditorDocks::DockPlots(RunMonitor* monitor) {

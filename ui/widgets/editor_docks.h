@@ -55,11 +55,12 @@ class EditorDocks : public QObject {
   void showEditor(int part, int index, int move);
 
  signals:
-  // The stages', grippers' or obstacles' tab came up or went away: their
-  // handles show in the view only then.
+  // The stages', grippers', obstacles' or properties' tab came up or went
+  // away: their handles show in the view only then.
   void stagesShown(bool shown);
   void grippersShown(bool shown);
   void obstaclesShown(bool shown);
+  void propertiesShown(bool shown);
 
  private:
   void DockEditors();

@@ -9,6 +9,7 @@
 #include "core/model/obstacle_anchor.h"
 #include "ui/widgets/drag_handles.h"
 #include "ui/widgets/live_drag.h"
+#include "ui/widgets/outline_handles.h"
 #include "ui/widgets/path_handles.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/view_controller.h"
@@ -38,6 +39,8 @@ HandleController::HandleController(VtkViewport* viewport,
   obstacle_ = new DragHandles(viewport_->interactor(), this);
   connect(obstacle_, &DragHandles::released, this, &HandleController::OnObstacleDragged);
   connect(obstacle_, &DragHandles::dragged, this, [this] { viewport_->requestRender(); });
+  outline_ = new OutlineHandles(viewport_->interactor(), this);
+  connect(outline_, &OutlineHandles::released, this, &HandleController::OnOutlineDragged);
   live_ = new LiveDrag(viewport_, this);
   connect(live_, &LiveDrag::message, this, &HandleController::message);
   connect(live_, &LiveDrag::released, this, [this](const QString& what, const Scene& after) {
@@ -73,6 +76,11 @@ void HandleController::setObstaclesShown(bool shown) {
   update();
 }
 
+void HandleController::setPropertiesShown(bool shown) {
+  properties_shown_ = shown;
+  update();
+}
+
 void HandleController::setGrippersShown(bool shown) {
   grippers_shown_ = shown;
   update();
@@ -91,6 +99,7 @@ void HandleController::setSolved(std::shared_ptr<ShellSolver> solver, const Scen
 void HandleController::clear() {
   path_->clear();
   obstacle_->clear();
+  outline_->clear();
   live_->clear();
 }
 
@@ -115,6 +124,10 @@ void HandleController::update() {
       obstacle_index_ < static_cast<int>(scene.obstacles.size()))
     if (const auto anchor = ObstacleAnchor(scene.obstacles[obstacle_index_]))
       obstacle_->show(renderer->renderer(), {*anchor});
+  // A pattern piece's outline is edited in the pattern CAD it came from.
+  if (properties_shown_)
+    if (const auto* polygon = std::get_if<PolygonOutline>(&scene.fabric.outline))
+      outline_->show(renderer->renderer(), *polygon, scene.fabric.elevation);
   if (grippers_shown_ && view_->stepCount() > 0 && view_->currentStep() == view_->stepCount() &&
       live_->canDrag(document_->scene()))
     live_->show(renderer);
@@ -128,6 +141,15 @@ void HandleController::OnObstacleDragged() {
   if (!anchor) return;
   o = Translated(o, obstacle_->position(0) - *anchor);
   ApplyAfterDrag("move " + QString::fromStdString(o.name), after);
+}
+
+// The outline the handles make is the fabric's; the document remeshes it,
+// or refuses it (an outline that crosses itself) and the handles go back.
+void HandleController::OnOutlineDragged(int vertex, const PolygonOutline& outline) {
+  Scene after = document_->scene();
+  if (!std::holds_alternative<PolygonOutline>(after.fabric.outline)) return;
+  after.fabric.outline = outline;
+  ApplyAfterDrag(QString("move outline vertex %1").arg(vertex + 1), after);
 }
 
 // While the path of a gripper's last move is dragged at the run's end, the

@@ -1,6 +1,7 @@
 // The handles in the viewport that edit the scene by dragging: the
-// selected move's path (while the stages' editor is up) and the selected
-// obstacle's place (while the obstacles' editor is up). A drag let go is
+// selected move's path (while the stages' editor is up), the selected
+// obstacle's place (while the obstacles' editor is up) and a polygon
+// outline's vertices (while the properties' editor is up). A drag let go is
 // one undoable edit of the document; a refused one puts the handles back.
 // Handles live in the view's renderer: they go when it is remade and come
 // back on the new one; none while a run works on the scene.
@@ -22,6 +23,7 @@ namespace drape {
 
 class DragHandles;
 class LiveDrag;
+class OutlineHandles;
 class PathHandles;
 class ShellSolver;
 class SceneDocument;
@@ -39,6 +41,7 @@ class HandleController : public QObject {
   PathHandles* pathHandles() const { return path_; }
   DragHandles* obstacleHandles() const { return obstacle_; }
   LiveDrag* liveDrag() const { return live_; }
+  OutlineHandles* outlineHandles() const { return outline_; }
 
   // A complete run's solver at the end of `scene`: while the view shows
   // that scene's last step and the grippers' editor is up, each held
@@ -52,6 +55,8 @@ class HandleController : public QObject {
   void selectObstacle(int obstacle);
   void setStagesShown(bool shown);
   void setObstaclesShown(bool shown);
+  // A polygon outline's vertices get handles while the properties show.
+  void setPropertiesShown(bool shown);
   // The grippers' live-drag handles show while their editor's dock does.
   void setGrippersShown(bool shown);
   // Off while a run works on the scene (edits wait for it).
@@ -72,6 +77,7 @@ class HandleController : public QObject {
   void OnPathPreviewed(const Path& path);
   void OnPathDragged(const Path& path);
   void OnObstacleDragged();
+  void OnOutlineDragged(int vertex, const PolygonOutline& outline);
   // `applied` runs once the edit is accepted.
   void ApplyAfterDrag(const QString& what,
                       const Scene& after,
@@ -82,11 +88,13 @@ class HandleController : public QObject {
   ViewController* view_;
   PathHandles* path_ = nullptr;
   DragHandles* obstacle_ = nullptr;
+  OutlineHandles* outline_ = nullptr;
   LiveDrag* live_ = nullptr;
   int stage_ = -1, move_ = -1;                           // the move whose path has handles
   int obstacle_index_ = -1;                              // the obstacle with a handle
   bool stages_shown_ = false, obstacles_shown_ = false;  // their docks' tabs are up
   bool grippers_shown_ = false;
+  bool properties_shown_ = false;
   bool editable_ = true;
 };
 

@@ -39,10 +39,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   previews_ = new PreviewController(this);
   docks_ = new EditorDocks(document_, monitor_, this);
   // Handles show while their editor is up: a path's with the stages, an
-  // obstacle's with the obstacles.
+  // obstacle's with the obstacles, an outline's with the properties.
   connect(docks_, &EditorDocks::stagesShown, handles_, &HandleController::setStagesShown);
   connect(docks_, &EditorDocks::grippersShown, handles_, &HandleController::setGrippersShown);
   connect(docks_, &EditorDocks::obstaclesShown, handles_, &HandleController::setObstaclesShown);
+  connect(docks_, &EditorDocks::propertiesShown, handles_, &HandleController::setPropertiesShown);
   ShowUnits(units_->system());
   connect(units_, &UnitSettings::changed, this, &MainWindow::ShowUnits);
   connect(documents_, &DocumentController::opened, units_, &UnitSettings::followSceneFile);

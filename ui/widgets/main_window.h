@@ -41,6 +41,7 @@ class LoadsPanel;
 class PreviewController;
 class ModelTree;
 class ObstaclesPanel;
+class OutlineHandles;
 class PathHandles;
 class ProbePlot;
 class ProbesPanel;
@@ -100,6 +101,7 @@ class MainWindow : public QMainWindow {
   ReactionPlot* reactionPlot() const { return monitor_->reactionPlot(); }
   PathHandles* pathHandles() const { return handles_->pathHandles(); }
   DragHandles* obstacleHandles() const { return handles_->obstacleHandles(); }
+  OutlineHandles* outlineHandles() const { return handles_->outlineHandles(); }
   // Nodes picked in the viewport (pick mode), in the order picked.
   const std::vector<int>& pickedNodes() const { return picking_->picked(); }
 
