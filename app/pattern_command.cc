@@ -3,6 +3,9 @@
 // name, area, size, notches, drill holes, cut-outs, internal lines and
 // grain line — so that a scene can name the piece and its marks. With
 // --json, the same in SI (m, m², degrees).
+//
+// `drape pattern write SPEC.json -o FILE.dxf`: pieces described in JSON
+// (lengths with units) written as DXF-AAMA, for pattern CAD to read.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -13,7 +16,10 @@
 
 #include "app/commands.h"
 #include "core/io/dxf_pattern_reader.h"
+#include "core/io/dxf_pattern_writer.h"
+#include "core/io/pattern_spec.h"
 #include "core/model/outline_geometry.h"
+#include "core/model/scene_error.h"
 
 namespace drape::app {
 namespace {
@@ -21,6 +27,7 @@ namespace {
 struct PatternArgs {
   std::string file;
   bool json = false;
+  std::string output;
 };
 
 Bounds2 Extent(const PatternPiece& piece) {
@@ -94,6 +101,21 @@ int RunList(const PatternArgs& args) {
   return 1;
 }
 
+int RunWrite(const PatternArgs& args) {
+  try {
+    const std::vector<PatternPiece> pieces = ReadPatternSpec(args.file);
+    WriteDxfPattern(args.output, pieces);
+    std::printf(
+        "%s: %zu pieces written (DXF-AAMA, millimetres)\n", args.output.c_str(), pieces.size());
+    return 0;
+  } catch (const SceneError& e) {
+    std::cerr << "drape pattern write: " << args.file << ": " << e.what() << "\n";
+  } catch (const std::runtime_error& e) {
+    std::cerr << "drape pattern write: " << e.what() << "\n";
+  }
+  return 1;
+}
+
 }  // namespace
 
 void AddPatternCommand(CLI::App& app, CommandRunner& runner) {
@@ -105,6 +127,11 @@ void AddPatternCommand(CLI::App& app, CommandRunner& runner) {
   list->add_option("file", args->file, "A DXF in the AAMA layout (ASTM D6673)")->required();
   list->add_flag("--json", args->json, "The same in SI, as JSON");
   list->callback([args, &runner] { runner = [args] { return RunList(*args); }; });
+  CLI::App* write = pattern->add_subcommand(
+      "write", "Write pieces described in JSON (a drape_pattern file) as DXF-AAMA");
+  write->add_option("spec", args->file, "The pieces, in JSON (docs/format.md §9)")->required();
+  write->add_option("-o,--output", args->output, "The DXF file to write")->required();
+  write->callback([args, &runner] { runner = [args] { return RunWrite(*args); }; });
 }
 
 }  // namespace drape::app

@@ -12,6 +12,7 @@
 
 #include "support/aama_patterns.h"
 #include "support/finite_outputs.h"
+#include "support/fuzz_files.h"
 #include "support/run_cli.h"
 #include "support/temp_dir.h"
 
@@ -112,6 +113,50 @@ TEST(PatternCli, ListsThePiecesOfAFile) {
   const CommandResult bad = RunCommand("pattern list " + Quote(dir / "none.dxf"), true);
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.output.find("cannot be opened"), std::string::npos) << bad.output;
+}
+
+// The shoelace area of a JSON cut line in "x cm" strings [mm²].
+double CutAreaMm2(const nlohmann::json& cut) {
+  double twice = 0;
+  for (std::size_t i = 0; i < cut.size(); ++i) {
+    const auto& a = cut[i];
+    const auto& b = cut[(i + 1) % cut.size()];
+    auto mm = [](const nlohmann::json& v) { return 10 * std::stod(v.get<std::string>()); };
+    twice += mm(a[0]) * mm(b[1]) - mm(b[0]) * mm(a[1]);
+  }
+  return std::abs(twice) / 2;
+}
+
+TEST(PatternCli, WritesTheShippedGarmentsByteForByte) {
+  TempDir dir("pattern-cli-write");
+  const std::filesystem::path shipped = test::SourceDir() / "resources" / "patterns";
+  const CommandResult r = RunCommand("pattern write " + Quote(shipped / "garments.json") + " -o " +
+                                     Quote(dir / "garments.dxf"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The shipped DXF is this writer's output, and stays so.
+  EXPECT_EQ(test::ReadBytes(dir / "garments.dxf"), test::ReadBytes(shipped / "garments.dxf"))
+      << "resources/patterns/garments.dxf differs from what `drape pattern write` makes of "
+         "garments.json; write it again";
+  // Read by ezdxf: the pieces the JSON draws.
+  const nlohmann::json spec = ReadJson(shipped / "garments.json");
+  const nlohmann::json d = test::DescribedByEzdxf(dir / "garments.dxf");
+  EXPECT_EQ(d["insunits"], 4);
+  for (const auto& piece : spec["pieces"]) {
+    const nlohmann::json& read = d["pieces"][piece["name"].get<std::string>()];
+    EXPECT_EQ(read["cut_points"], piece["cut"].size());
+    EXPECT_NEAR(read["cut_area"].get<double>(), CutAreaMm2(piece["cut"]), 1e-6);
+    EXPECT_EQ(read["notches"].size(), piece["notches"].size());
+    EXPECT_NEAR(read["grain_deg"].get<double>(), 90.0, 1e-9);
+  }
+  // A bad description: one line, exit 1.
+  std::ofstream(dir / "bad.json") << R"({"drape_pattern": 1, "pieces": [{"name": "X",
+      "cut": [[0, 0], ["1 cm", "1 cm"], ["1 cm", 0], [0, "1 cm"]]}]})";
+  const CommandResult bad = RunCommand(
+      "pattern write " + Quote(dir / "bad.json") + " -o " + Quote(dir / "bad.dxf"), true);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("pieces[0].cut: crosses itself"), std::string::npos) << bad.output;
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.dxf"));
 }
 
 TEST(PatternCli, ABadPatternFileIsOneMessageAndExitOne) {
