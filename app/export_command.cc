@@ -42,18 +42,34 @@ int RunOutlineExport(const ExportArgs& args) {
     } else {
       steps.push_back(StepIndex(run, args.step));
     }
-    std::string name = "FABRIC";
-    std::vector<PiecePoint> notches;
-    if (const auto* pattern = std::get_if<PatternOutline>(&run.scene.fabric.outline)) {
-      name = pattern->piece;
-      notches = pattern->shape.notches;
-    }
+    // One piece per part of the fabric: a pattern piece by its piece's
+    // name, another by its part's (or FABRIC).
+    const auto parts = FabricParts(run.scene);
+    const auto spans = PartsOf(run.model.mesh);
     std::filesystem::create_directories(args.output);
     for (size_t i : steps) {
+      std::vector<PatternPiece> pieces;
+      for (std::size_t p = 0; p < spans.size() && p < parts.size(); ++p) {
+        std::string name = parts[p]->name.empty() ? "FABRIC" : parts[p]->name;
+        std::vector<PiecePoint> notches;
+        if (const auto* pattern = std::get_if<PatternOutline>(&parts[p]->outline)) {
+          name = pattern->piece;
+          notches = pattern->shape.notches;
+        }
+        const auto& span = spans[p];
+        pieces.push_back(
+            ProjectedOutline(PartMesh(run.model.mesh, span),
+                             run.states[i].positions.middleRows(span.first_node, span.nodes),
+                             name,
+                             notches));
+      }
+      // Two plies cut from one piece keep their parts' names apart.
+      for (std::size_t p = 0; p < pieces.size(); ++p)
+        for (std::size_t q = 0; q < p; ++q)
+          if (pieces[q].name == pieces[p].name) pieces[p].name += "-" + parts[p]->name;
       const std::filesystem::path file =
           std::filesystem::path(args.output) / ("outline-step-" + std::to_string(i) + ".dxf");
-      WriteDxfPattern(file,
-                      {ProjectedOutline(run.model.mesh, run.states[i].positions, name, notches)});
+      WriteDxfPattern(file, pieces);
     }
     std::cerr << "  " << steps.size() << " files in " << args.output << "\n";
     return 0;

@@ -66,7 +66,7 @@ bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double&
 }
 
 ShellModel BuildShellModel(const Scene& scene) {
-  return BuildShellModel(scene, MeshFabric(SceneOnSolvedMesh(scene).fabric));
+  return BuildShellModel(scene, MeshFabricParts(SceneOnSolvedMesh(scene)));
 }
 
 ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
@@ -77,7 +77,7 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
   model.section = std::move(material.section);
   model.bending_valid_to = material.bending_valid_to;
   model.warnings = std::move(material.warnings);
-  model.characteristic_length = OutlineSize(scene.fabric.outline);
+  model.characteristic_length = PartsSize(scene);
   model.thickness = scene.material.thickness;
 
   const double angle = scene.material.angle_deg * M_PI / 180.0;
@@ -121,7 +121,8 @@ ShellModel BuildShellModel(const Scene& scene, Mesh reference_mesh) {
                                         ToEigen(load.force),
                                         ToEigen(load.moment)));
   }
-  for (const auto& probe : scene.probes) model.probes.push_back(LocateProbe(mesh, probe));
+  for (const auto& probe : scene.probes)
+    model.probes.push_back(LocateProbeInParts(scene, mesh, probe));
   return model;
 }
 
@@ -130,6 +131,23 @@ std::array<Eigen::Vector3d, 4> ElementBendingStrains(const ShellModel& model,
                                                      int e) {
   const ShellElementState element = ElementStateOf(model, state, e);
   return BendingStrains(model.elements[e], element.positions, element.directors);
+}
+
+// The probe in its part: the one it names, else the one it lies on
+// (ResolveSelections has refused a probe on two parts).
+ProbePoint LocateProbeInParts(const Scene& scene, const Mesh& mesh, const Probe& probe) {
+  if (scene.other_parts.empty()) return LocateProbe(mesh, probe);
+  const auto parts = FabricParts(scene);
+  const auto spans = PartsOf(mesh);
+  const auto on = PartsAt(scene, probe.at, DefaultSelectionTolerance(scene.fabric.outline));
+  const std::string name = probe.part ? *probe.part : on.empty() ? parts[0]->name : on[0];
+  for (std::size_t p = 0; p < parts.size() && p < spans.size(); ++p)
+    if (parts[p]->name == name) {
+      ProbePoint located = LocateProbe(PartMesh(mesh, spans[p]), probe);
+      located.element += spans[p].first_element;
+      return located;
+    }
+  return LocateProbe(mesh, probe);
 }
 
 ProbePoint LocateProbe(const Mesh& mesh, const Probe& probe) {

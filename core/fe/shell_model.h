@@ -83,6 +83,9 @@ ShellModel BuildShellModel(const Scene& scene, Mesh mesh);
 // bilinear map; false when it lies outside the element (beyond round-off).
 bool LocateInElement(const Mesh& mesh, int e, const Vec2& p, double& xi, double& eta);
 
+// A probe of a fabric of several parts located in its part.
+ProbePoint LocateProbeInParts(const Scene& scene, const Mesh& mesh, const Probe& probe);
+
 // Where a reference point lies: its element and (ξ, η) in it; a point off
 // the mesh (a curved outline's meshed polygon lies slightly inside) goes to
 // the nearest node.

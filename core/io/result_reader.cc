@@ -76,6 +76,37 @@ std::vector<NamedVector> ReactionsOf(const json& j,
   return reactions;
 }
 
+// The parts of a fabric of several (`mesh.parts`; states.bin keeps nodes and
+// quads only): consecutive ranges covering the mesh, one per part.
+std::vector<MeshPart> PartsOf(const json& r,
+                              const Mesh& mesh,
+                              const Scene& scene,
+                              const fs::path& file) {
+  if (scene.other_parts.empty()) return {};
+  const json* parts = r.contains("mesh") ? &r["mesh"] : nullptr;
+  if (!parts || !parts->contains("parts") || !(*parts)["parts"].is_array() ||
+      (*parts)["parts"].size() != scene.other_parts.size() + 1)
+    Fail(file, "mesh.parts: expected one entry per part of the scene's fabric");
+  std::vector<MeshPart> out;
+  int nodes = 0, elements = 0;
+  for (const json& p : (*parts)["parts"]) {
+    const std::string where = "mesh.parts[" + std::to_string(out.size()) + "]";
+    MeshPart part{IntOf(p.at("first_node"), where + ".first_node", file),
+                  IntOf(p.at("nodes"), where + ".nodes", file),
+                  IntOf(p.at("first_element"), where + ".first_element", file),
+                  IntOf(p.at("elements"), where + ".elements", file)};
+    if (part.first_node != nodes || part.first_element != elements || part.nodes <= 0 ||
+        part.elements <= 0)
+      Fail(file, where + ": not the range after the part before it");
+    nodes += part.nodes;
+    elements += part.elements;
+    out.push_back(part);
+  }
+  if (nodes != mesh.NodeCount() || elements != mesh.ElementCount())
+    Fail(file, "mesh.parts: the parts do not cover the mesh of states.bin");
+  return out;
+}
+
 }  // namespace
 
 RunRecord ReadRunRecord(const fs::path& path) {
@@ -100,6 +131,7 @@ RunRecord ReadRunRecord(const fs::path& path) {
     const StateFile states =
         ReadStateFile(record.directory / r.value("states_file", kStatesFileName));
     record.mesh = states.mesh;
+    record.mesh.parts = PartsOf(r, record.mesh, record.scene, file);
     record.states = states.steps;
     std::vector<std::string> obstacle_names;
     for (const auto& o : record.scene.obstacles) obstacle_names.push_back(o.name);

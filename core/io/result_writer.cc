@@ -26,9 +26,13 @@ Scene SelfContained(Scene scene) {
   for (auto& obstacle : scene.obstacles)
     if (auto* mesh = std::get_if<MeshShape>(&obstacle.shape); mesh && !mesh->resolved_path.empty())
       mesh->file = mesh->resolved_path;
-  if (auto* pattern = std::get_if<PatternOutline>(&scene.fabric.outline);
-      pattern && !pattern->resolved_path.empty())
-    pattern->file = pattern->resolved_path;
+  auto absolute = [](Fabric& part) {
+    if (auto* pattern = std::get_if<PatternOutline>(&part.outline);
+        pattern && !pattern->resolved_path.empty())
+      pattern->file = pattern->resolved_path;
+  };
+  absolute(scene.fabric);
+  for (Fabric& part : scene.other_parts) absolute(part);
   return scene;
 }
 
@@ -62,6 +66,7 @@ struct ResultWriter::Impl {
   json scene_resolved;
   std::string scene_name;
   int nodes = 0, elements = 0, dofs = 0;
+  json parts;  // null for a fabric of one part
   std::unique_ptr<StateFileWriter> states;
   std::ofstream csv;
   json steps = json::array();
@@ -91,6 +96,17 @@ ResultWriter::ResultWriter(const std::filesystem::path& directory,
   impl_->nodes = model.NodeCount();
   impl_->elements = model.mesh.ElementCount();
   impl_->dofs = model.DofCount();
+  if (!scene.other_parts.empty()) {
+    const auto fabric = FabricParts(scene);
+    const auto spans = PartsOf(model.mesh);
+    impl_->parts = json::array();
+    for (std::size_t p = 0; p < spans.size() && p < fabric.size(); ++p)
+      impl_->parts.push_back({{"name", fabric[p]->name},
+                              {"first_node", spans[p].first_node},
+                              {"nodes", spans[p].nodes},
+                              {"first_element", spans[p].first_element},
+                              {"elements", spans[p].elements}});
+  }
   impl_->states = std::make_unique<StateFileWriter>(directory / kStatesFileName, model.mesh);
   impl_->csv.open(directory / kStepsCsvFileName);
   if (!impl_->csv)
@@ -221,6 +237,7 @@ nlohmann::json ResultWriter::Document(const SolveSummary& summary,
   r["status"] = status;
   r["message"] = summary.message;
   r["mesh"] = {{"nodes", impl_->nodes}, {"elements", impl_->elements}, {"dofs", impl_->dofs}};
+  if (!impl_->parts.is_null()) r["mesh"]["parts"] = impl_->parts;
   r["stages"] = json::array();
   for (const auto& st : summary.stages)
     r["stages"].push_back({{"name", st.name},

@@ -24,6 +24,10 @@ class SceneParser {
 
  private:
   Fabric ReadFabric(const JsonCursor& c);
+  // `fabric`: one part, or an array of named parts.
+  void ReadFabricParts(const JsonCursor& c, Scene& scene);
+  // The part a selection or probe names at `c` ("part"), checked.
+  std::optional<std::string> ReadPartName(const JsonCursor& c) const;
   Outline ReadOutline(const JsonCursor& c);
   // A piece of a DXF-AAMA pattern file (relative to the scene's folder).
   PatternOutline ReadPatternOutline(const JsonCursor& c);
@@ -63,7 +67,9 @@ class SceneParser {
   // Names already taken, per namespace, with the path that took them.
   std::map<std::string, std::map<std::string, std::string>> names_;
   std::filesystem::path base_;
-  const Fabric* fabric_ = nullptr;  // while the material is read
+  // The fabric's parts, once read: "grain" reads their grain lines, and
+  // selections and probes name them.
+  std::vector<const Fabric*> parts_;
 };
 
 }  // namespace drape

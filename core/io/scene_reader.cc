@@ -82,10 +82,9 @@ Scene SceneParser::Read(const JsonCursor& root) {
   Scene scene;
   if (auto c = root.Find("name")) scene.name = c->String();
   if (auto c = root.Find("description")) scene.description = c->String();
-  scene.fabric = ReadFabric(root["fabric"]);
-  fabric_ = &scene.fabric;  // "grain" reads the piece's grain line
+  ReadFabricParts(root["fabric"], scene);
+  parts_ = FabricParts(scene);
   scene.material = ReadMaterialOrLibrary(root["material"]);
-  fabric_ = nullptr;
   scene.supports =
       ReadList<Support>(root.Find("supports"), [&](auto& c) { return ReadSupport(c); });
   scene.grippers =
@@ -104,6 +103,7 @@ Scene SceneParser::Read(const JsonCursor& root) {
   if (auto c = root.Find("solver")) scene.solver = ReadSolver(*c);
   scene.probes = ReadList<Probe>(root.Find("probes"), [&](auto& c) { return ReadProbe(c); });
   CheckStages(root, scene);
+  parts_.clear();
   try {
     CheckSequencing(SceneOnSolvedMesh(scene), scene.solver.sequencing);
   } catch (const SceneError& e) {

@@ -5,9 +5,39 @@
 
 namespace drape {
 
+void SceneParser::ReadFabricParts(const JsonCursor& c, Scene& scene) {
+  if (!c.value().is_array()) {
+    scene.fabric = ReadFabric(c);
+    return;
+  }
+  const auto items = c.Items();
+  if (items.empty()) c.Fail("expected the fabric's parts, at least one");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    // Selections and probes tell the parts apart by name.
+    const std::string name = ReadName(items[i], "fabric part");
+    Fabric part = ReadFabric(items[i]);
+    part.name = name;
+    (i == 0 ? scene.fabric : scene.other_parts.emplace_back()) = std::move(part);
+  }
+}
+
+std::optional<std::string> SceneParser::ReadPartName(const JsonCursor& c) const {
+  const auto part = c.Find("part");
+  if (!part) return std::nullopt;
+  const std::string name = part->String();
+  std::string names;
+  for (const Fabric* f : parts_) {
+    if (!f->name.empty() && f->name == name) return name;
+    names += (names.empty() ? "'" : ", '") + f->name + "'";
+  }
+  if (parts_.size() < 2) part->Fail("names a part of a fabric with several; this fabric has one");
+  part->Fail("no fabric part is named '" + name + "'; the parts are " + names);
+}
+
 Fabric SceneParser::ReadFabric(const JsonCursor& c) {
-  c.ExpectObject({"outline", "mesh", "elevation", "imperfection"});
+  c.ExpectObject({"name", "outline", "mesh", "elevation", "imperfection"});
   Fabric fabric;
+  if (auto n = c.Find("name")) fabric.name = n->String();
   fabric.outline = ReadOutline(c["outline"]);
   fabric.mesh = ReadMeshSpec(c["mesh"], fabric.outline);
   if (auto e = c.Find("elevation")) fabric.elevation = e->Quantity(dim::kLength);

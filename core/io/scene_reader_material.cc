@@ -166,15 +166,28 @@ Material SceneParser::ReadMaterial(const JsonCursor& c) {
   return m;
 }
 
+// One material has one warp: with several parts, each is a pattern piece
+// and their grain lines agree.
 double SceneParser::GrainAngle(const JsonCursor& c) const {
-  const auto* pattern = fabric_ ? std::get_if<PatternOutline>(&fabric_->outline) : nullptr;
-  if (!pattern)
-    c.Fail(
-        "\"grain\" takes the warp from a pattern piece's grain line; this fabric's outline is "
-        "not a pattern piece");
-  if (!pattern->shape.grain)
-    c.Fail("piece '" + pattern->piece + "' of " + pattern->file + " has no grain line (layer 7)");
-  return GrainAngleDeg(pattern->shape);
+  std::optional<double> angle;
+  std::string first;
+  for (const Fabric* part : parts_) {
+    const auto* pattern = std::get_if<PatternOutline>(&part->outline);
+    if (!pattern)
+      c.Fail("\"grain\" takes the warp from a pattern piece's grain line; " +
+             (parts_.size() > 1 ? "part '" + part->name + "'" : std::string("this fabric")) +
+             "'s outline is not a pattern piece");
+    if (!pattern->shape.grain)
+      c.Fail("piece '" + pattern->piece + "' of " + pattern->file + " has no grain line (layer 7)");
+    const double a = GrainAngleDeg(pattern->shape);
+    if (angle && std::abs(std::remainder(a - *angle, 360.0)) > 1e-9)
+      c.Fail("the parts' grain lines differ ('" + first + "' " + std::to_string(*angle) +
+             " deg, '" + part->name + "' " + std::to_string(a) +
+             " deg) and the parts share one material: give angle_deg");
+    if (!angle) first = part->name;
+    angle = a;
+  }
+  return *angle;
 }
 
 Bending SceneParser::ReadBending(const JsonCursor& c) {

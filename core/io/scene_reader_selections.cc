@@ -15,7 +15,8 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
                   "notch",
                   "drill",
                   "internal_line",
-                  "tolerance"});
+                  "tolerance",
+                  "part"});
   Selection s;
   switch (c.OneOf({"point",
                    "line",
@@ -88,6 +89,7 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
     }
   }
   if (auto t = c.Find("tolerance")) s.tolerance = t->PositiveQuantity(dim::kLength);
+  s.part = ReadPartName(c);
   return s;
 }
 

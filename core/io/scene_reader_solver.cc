@@ -84,10 +84,11 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
 }
 
 Probe SceneParser::ReadProbe(const JsonCursor& c) {
-  c.ExpectObject({"name", "at"});
+  c.ExpectObject({"name", "at", "part"});
   Probe p;
   p.name = ReadName(c, "probe");
   p.at = c["at"].QuantityVec2(dim::kLength);
+  p.part = ReadPartName(c);
   return p;
 }
 

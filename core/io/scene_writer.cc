@@ -36,6 +36,7 @@ json ToJson(const Outline& outline) {
 
 json ToJson(const Fabric& f) {
   json j{{"outline", ToJson(f.outline)}, {"mesh", json::object()}};
+  if (!f.name.empty()) j["name"] = f.name;
   if (f.mesh.elements) j["mesh"]["elements"] = *f.mesh.elements;
   if (f.mesh.size) j["mesh"]["size"] = *f.mesh.size;
   j["elevation"] = f.elevation;
@@ -141,6 +142,7 @@ json ToJson(const Selection& s) {
                       },
                       s.shape);
   if (s.tolerance) j["tolerance"] = *s.tolerance;
+  if (s.part) j["part"] = *s.part;
   return j;
 }
 
@@ -230,7 +232,12 @@ nlohmann::ordered_json SceneToJson(const Scene& scene) {
   j["drape_scene"] = kSceneFormatVersion;
   j["name"] = scene.name;
   if (!scene.description.empty()) j["description"] = scene.description;
-  j["fabric"] = ToJson(scene.fabric);
+  if (scene.other_parts.empty()) {
+    j["fabric"] = ToJson(scene.fabric);
+  } else {
+    j["fabric"] = json::array();
+    for (const Fabric* part : FabricParts(scene)) j["fabric"].push_back(ToJson(*part));
+  }
   j["material"] = ToJson(scene.material);
   j["supports"] = json::array();
   for (const auto& s : scene.supports)
@@ -271,7 +278,10 @@ nlohmann::ordered_json SceneToJson(const Scene& scene) {
   for (const auto& s : scene.stages) j["stages"].push_back(ToJson(s));
   j["solver"] = ToJson(scene.solver);
   j["probes"] = json::array();
-  for (const auto& p : scene.probes) j["probes"].push_back({{"name", p.name}, {"at", p.at}});
+  for (const auto& p : scene.probes) {
+    j["probes"].push_back({{"name", p.name}, {"at", p.at}});
+    if (p.part) j["probes"].back()["part"] = *p.part;
+  }
   return j;
 }
 
@@ -354,6 +364,8 @@ Scene WithAbsoluteReferences(const Scene& scene, const std::filesystem::path& fo
   for (Obstacle& o : out.obstacles)
     if (auto* mesh = std::get_if<MeshShape>(&o.shape)) absolute(mesh->file);
   if (auto* pattern = std::get_if<PatternOutline>(&out.fabric.outline)) absolute(pattern->file);
+  for (Fabric& part : out.other_parts)
+    if (auto* pattern = std::get_if<PatternOutline>(&part.outline)) absolute(pattern->file);
   return out;
 }
 

@@ -38,6 +38,31 @@ MeshFeatures PieceFeatures(const PatternPiece& piece) {
 
 }  // namespace
 
+Mesh MeshFabricParts(const Scene& scene) {
+  if (scene.other_parts.empty()) return MeshFabric(scene.fabric);
+  std::vector<Mesh> meshes;
+  const auto parts = FabricParts(scene);
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    try {
+      meshes.push_back(MeshFabric(*parts[p]));
+    } catch (const SceneError& e) {
+      // "fabric.outline" → "fabric[p].outline"
+      throw SceneError("fabric[" + std::to_string(p) + "]" + e.where().substr(6), e.message());
+    }
+  }
+  return JoinedMesh(meshes);
+}
+
+Eigen::VectorXd PartElevations(const Scene& scene, const Mesh& mesh) {
+  Eigen::VectorXd z(mesh.NodeCount());
+  const auto parts = FabricParts(scene);
+  const auto spans = PartsOf(mesh);
+  for (std::size_t p = 0; p < spans.size(); ++p)
+    z.segment(spans[p].first_node, spans[p].nodes)
+        .setConstant(parts[std::min(p, parts.size() - 1)]->elevation);
+  return z;
+}
+
 std::array<int, 2> RectangleElementCounts(const RectangleOutline& rectangle, double element_size) {
   auto count = [&](double length) {
     return std::max(1, static_cast<int>(std::lround(length / element_size)));

@@ -11,6 +11,14 @@ namespace drape {
 // `fabric.mesh` or `fabric.outline` when the outline cannot be meshed.
 Mesh MeshFabric(const Fabric& fabric);
 
+// Every part of the scene's fabric meshed by MeshFabric and joined, part
+// after part (Mesh::parts); a fabric of one part is MeshFabric's mesh.
+// Errors name the part's key (`fabric[1].outline`).
+Mesh MeshFabricParts(const Scene& scene);
+
+// The flat plane's height of each node (its part's elevation) [m].
+Eigen::VectorXd PartElevations(const Scene& scene, const Mesh& mesh);
+
 // Element counts [nx, ny] a rectangle gets for a target element edge.
 std::array<int, 2> RectangleElementCounts(const RectangleOutline& rectangle, double element_size);
 

@@ -87,6 +87,37 @@ Mesh MeshRectangle(
   return mesh;
 }
 
+std::vector<MeshPart> PartsOf(const Mesh& mesh) {
+  if (!mesh.parts.empty()) return mesh.parts;
+  return {MeshPart{0, mesh.NodeCount(), 0, mesh.ElementCount()}};
+}
+
+Mesh PartMesh(const Mesh& mesh, const MeshPart& part) {
+  Mesh out;
+  out.positions = mesh.positions.middleRows(part.first_node, part.nodes);
+  out.quads = mesh.quads.middleRows(part.first_element, part.elements).array() - part.first_node;
+  return out;
+}
+
+Mesh JoinedMesh(const std::vector<Mesh>& parts) {
+  Mesh out;
+  int nodes = 0, elements = 0;
+  for (const Mesh& m : parts) {
+    out.parts.push_back({nodes, m.NodeCount(), elements, m.ElementCount()});
+    nodes += m.NodeCount();
+    elements += m.ElementCount();
+  }
+  out.positions.resize(nodes, 3);
+  out.quads.resize(elements, 4);
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const MeshPart& span = out.parts[p];
+    out.positions.middleRows(span.first_node, span.nodes) = parts[p].positions;
+    out.quads.middleRows(span.first_element, span.elements) =
+        parts[p].quads.array() + span.first_node;
+  }
+  return out;
+}
+
 double ProjectedArea(const Mesh& mesh) {
   double twice = 0;
   for (int e = 0; e < mesh.ElementCount(); ++e) twice += TwiceSignedArea(mesh, e);

@@ -13,13 +13,30 @@ namespace drape {
 // Bilinear-quad mesh. Node numbering and element numbering are deterministic
 // (rows of increasing y, then increasing x), and every quad is numbered
 // counter-clockwise seen from +z, so its normal points along +z.
+// The nodes and elements of one part of a mesh made of several (a fabric
+// cut as separate pieces): consecutive ranges, part after part.
+struct MeshPart {
+  int first_node = 0, nodes = 0;
+  int first_element = 0, elements = 0;
+};
+
 struct Mesh {
   Eigen::Matrix<double, Eigen::Dynamic, 3> positions;  // #nodes × 3, reference positions [m]
   Eigen::Matrix<int, Eigen::Dynamic, 4> quads;         // #elements × 4 node indices
+  // Empty for a mesh of one part; else each part's ranges, covering all.
+  std::vector<MeshPart> parts;
 
   int NodeCount() const { return static_cast<int>(positions.rows()); }
   int ElementCount() const { return static_cast<int>(quads.rows()); }
 };
+
+// The mesh's parts: `parts`, or the whole mesh as one.
+std::vector<MeshPart> PartsOf(const Mesh& mesh);
+// Part `part` of `mesh` as a mesh of its own (node k of it is node
+// first_node + k of `mesh`).
+Mesh PartMesh(const Mesh& mesh, const MeshPart& part);
+// The meshes of parts, one after another, as one mesh with its parts.
+Mesh JoinedMesh(const std::vector<Mesh>& parts);
 
 class MeshError : public std::runtime_error {
  public:

@@ -166,12 +166,53 @@ std::vector<int> SelectNodes(const Selection& selection, const Mesh& mesh, const
   return nodes;
 }
 
+std::vector<int> SelectNodesInParts(const Selection& selection,
+                                    const Scene& scene,
+                                    const Mesh& mesh) {
+  const auto parts = FabricParts(scene);
+  if (parts.size() == 1 || std::holds_alternative<NodesSelection>(selection.shape))
+    return SelectNodes(selection, mesh, scene.fabric.outline);
+  const auto spans = PartsOf(mesh);
+  std::vector<int> all;
+  std::vector<std::string> hit;
+  std::optional<SelectionError> first_error;
+  for (std::size_t p = 0; p < parts.size() && p < spans.size(); ++p) {
+    if (selection.part && *selection.part != parts[p]->name) continue;
+    std::vector<int> nodes;
+    try {
+      nodes = SelectNodes(selection, PartMesh(mesh, spans[p]), parts[p]->outline);
+    } catch (const SelectionError& e) {
+      // Unnamed, a point or a mark belongs to the parts that have it.
+      if (selection.part) throw;
+      if (!first_error) first_error = e;
+      continue;
+    }
+    if (!nodes.empty()) hit.push_back(parts[p]->name);
+    for (int n : nodes) all.push_back(n + spans[p].first_node);
+  }
+  if (hit.empty() && first_error) throw *first_error;
+  const auto* mark = std::get_if<PatternMarkSelection>(&selection.shape);
+  const bool one_node = std::holds_alternative<PointSelection>(selection.shape) ||
+                        (mark && mark->mark != PatternMark::kInternalLine);
+  if (one_node && hit.size() > 1)
+    throw SelectionError("it picks a node in each of the parts '" + hit[0] + "' and '" + hit[1] +
+                         "', which lie over each other there; name one with \"part\"");
+  return all;
+}
+
+std::vector<std::string> PartsAt(const Scene& scene, const Vec2& at, double tol) {
+  std::vector<std::string> names;
+  for (const Fabric* part : FabricParts(scene))
+    if (DistanceToOutline(part->outline, at) <= tol) names.push_back(part->name);
+  return names;
+}
+
 std::vector<ResolvedSelection> ResolveSelections(const Scene& scene, const Mesh& mesh) {
   std::vector<ResolvedSelection> resolved;
   auto resolve = [&](const std::string& path, const std::string& name, const Selection& s) {
     std::vector<int> nodes;
     try {
-      nodes = SelectNodes(s, mesh, scene.fabric.outline);
+      nodes = SelectNodesInParts(s, scene, mesh);
     } catch (const SelectionError& e) {
       throw SceneError(path, e.what());
     }
@@ -197,10 +238,27 @@ std::vector<ResolvedSelection> ResolveSelections(const Scene& scene, const Mesh&
   double tol = DefaultSelectionTolerance(scene.fabric.outline);
   for (size_t i = 0; i < scene.probes.size(); ++i) {
     const Probe& p = scene.probes[i];
-    if (double d = DistanceToOutline(scene.fabric.outline, p.at); d > tol)
-      throw SceneError("probes[" + std::to_string(i) + "].at",
-                       "probe '" + p.name + "' at " + Point(p.at) + " lies " + Length(d) +
-                           " outside the fabric");
+    if (scene.other_parts.empty()) {
+      if (double d = DistanceToOutline(scene.fabric.outline, p.at); d > tol)
+        throw SceneError("probes[" + std::to_string(i) + "].at",
+                         "probe '" + p.name + "' at " + Point(p.at) + " lies " + Length(d) +
+                             " outside the fabric");
+      continue;
+    }
+    const auto on = PartsAt(scene, p.at, tol);
+    const std::string where = "probes[" + std::to_string(i) + "]";
+    if (p.part && std::find(on.begin(), on.end(), *p.part) == on.end())
+      throw SceneError(
+          where + ".at",
+          "probe '" + p.name + "' at " + Point(p.at) + " lies outside part '" + *p.part + "'");
+    if (on.empty())
+      throw SceneError(
+          where + ".at",
+          "probe '" + p.name + "' at " + Point(p.at) + " lies on no part of the fabric");
+    if (!p.part && on.size() > 1)
+      throw SceneError(where,
+                       "probe '" + p.name + "' at " + Point(p.at) + " lies on the parts '" + on[0] +
+                           "' and '" + on[1] + "', over each other there; name one with \"part\"");
   }
   return resolved;
 }

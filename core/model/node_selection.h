@@ -40,4 +40,15 @@ struct ResolvedSelection {
 // selection that matched no node or cannot apply.
 std::vector<ResolvedSelection> ResolveSelections(const Scene& scene, const Mesh& mesh);
 
+// SelectNodes over a fabric of several parts (Mesh::parts): in the part the
+// selection names, else in every part that has what it selects. A point or
+// a notch found in two parts that lie over each other is an error asking
+// for "part".
+std::vector<int> SelectNodesInParts(const Selection& selection,
+                                    const Scene& scene,
+                                    const Mesh& mesh);
+
+// The names of the parts whose outline holds `at` (within `tol`).
+std::vector<std::string> PartsAt(const Scene& scene, const Vec2& at, double tol);
+
 }  // namespace drape

@@ -82,6 +82,18 @@ double OutlineSize(const Outline& outline) {
   return std::hypot(b.max[0] - b.min[0], b.max[1] - b.min[1]);
 }
 
+double PartsSize(const Scene& scene) {
+  Bounds2 all = OutlineBounds(scene.fabric.outline);
+  for (const Fabric& part : scene.other_parts) {
+    const Bounds2 b = OutlineBounds(part.outline);
+    for (int k = 0; k < 2; ++k) {
+      all.min[k] = std::min(all.min[k], b.min[k]);
+      all.max[k] = std::max(all.max[k], b.max[k]);
+    }
+  }
+  return std::hypot(all.max[0] - all.min[0], all.max[1] - all.min[1]);
+}
+
 double OutlineArea(const Outline& outline) {
   return std::visit(Overloaded{
                         [](const RectangleOutline& r) { return r.size[0] * r.size[1]; },

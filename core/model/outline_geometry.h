@@ -17,6 +17,9 @@ Bounds2 OutlineBounds(const Outline& outline);
 // Diagonal of the bounding box [m]: the part's characteristic size.
 double OutlineSize(const Outline& outline);
 
+// Diagonal of the box around every part of the scene's fabric [m].
+double PartsSize(const Scene& scene);
+
 // Area enclosed by the outline, its holes left out [m²].
 double OutlineArea(const Outline& outline);
 

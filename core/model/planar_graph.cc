@@ -135,9 +135,10 @@ class GraphBuilder {
     if (nearest_d <= snap_) return nearest;
 
     double best = std::numeric_limits<double>::infinity();
-    Eigen::Vector2d foot;
-    std::optional<std::pair<std::size_t, std::size_t>> loop_edge;
-    std::optional<std::size_t> segment;
+    Eigen::Vector2d foot = p;
+    // The nearest: loop l's edge i (segment < 0), or segment `segment`.
+    std::size_t l_best = 0, i_best = 0;
+    std::ptrdiff_t segment = -1;
     for (std::size_t l = 0; l < loops_.size(); ++l)
       for (std::size_t i = 0; i < loops_[l].size(); ++i) {
         Eigen::Vector2d q;
@@ -146,7 +147,8 @@ class GraphBuilder {
         if (d < best) {
           best = d;
           foot = q;
-          loop_edge = {l, i};
+          l_best = l;
+          i_best = i;
         }
       }
     for (std::size_t s = 0; s < segments_.size(); ++s) {
@@ -156,17 +158,16 @@ class GraphBuilder {
       if (d < best) {
         best = d;
         foot = q;
-        loop_edge.reset();
-        segment = s;
+        segment = static_cast<std::ptrdiff_t>(s);
       }
     }
     if (best <= snap_) {
       const int v = NewVertex(foot);
-      if (loop_edge) {
-        auto& loop = loops_[loop_edge->first];
-        loop.insert(loop.begin() + static_cast<std::ptrdiff_t>(loop_edge->second) + 1, v);
+      if (segment < 0) {
+        auto& loop = loops_[l_best];
+        loop.insert(loop.begin() + static_cast<std::ptrdiff_t>(i_best) + 1, v);
       } else {
-        SplitSegment(*segment, v);
+        SplitSegment(static_cast<std::size_t>(segment), v);
       }
       return v;
     }

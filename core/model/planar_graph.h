@@ -32,9 +32,9 @@ struct FeaturePoint {
 
 struct MeshFeatures {
   // Simple polygons inside the outline, apart from it and from each other.
-  std::vector<std::vector<Eigen::Vector2d>> holes;
-  std::vector<FeatureLine> lines;
-  std::vector<FeaturePoint> points;
+  std::vector<std::vector<Eigen::Vector2d>> holes = {};
+  std::vector<FeatureLine> lines = {};
+  std::vector<FeaturePoint> points = {};
 };
 
 struct PlanarGraph {

@@ -40,6 +40,12 @@ const char* ToString(Side side) {
   return "?";
 }
 
+std::vector<const Fabric*> FabricParts(const Scene& scene) {
+  std::vector<const Fabric*> parts{&scene.fabric};
+  for (const Fabric& f : scene.other_parts) parts.push_back(&f);
+  return parts;
+}
+
 const char* PatternMarkKey(PatternMark mark) {
   switch (mark) {
     case PatternMark::kNotch:

@@ -70,6 +70,9 @@ struct ImperfectionSpec {
 };
 
 struct Fabric {
+  // The part's name when the fabric has several ("fabric" an array): what
+  // selections and probes name with "part". Empty for a lone part.
+  std::string name;
   Outline outline;
   MeshSpec mesh;
   double elevation = 0;  // [m], z of the flat reference plane
@@ -194,6 +197,9 @@ using SelectionShape = std::variant<PointSelection,
 struct Selection {
   SelectionShape shape;
   std::optional<double> tolerance;  // [m]; default: a millionth of the part's size
+  // Of a fabric with several parts: the part's name; none selects in every
+  // part (a point or a mark in one part only).
+  std::optional<std::string> part = std::nullopt;
   friend bool operator==(const Selection&, const Selection&) = default;
 };
 
@@ -368,7 +374,8 @@ struct SolverSettings {
 
 struct Probe {
   std::string name;
-  Vec2 at{0, 0};  // reference coordinates [m]
+  Vec2 at{0, 0};                                   // reference coordinates [m]
+  std::optional<std::string> part = std::nullopt;  // as Selection::part
   friend bool operator==(const Probe&, const Probe&) = default;
 };
 
@@ -376,6 +383,10 @@ struct Scene {
   std::string name;
   std::string description;
   Fabric fabric;
+  // The fabric's other parts when "fabric" is an array (fabric[1], ...):
+  // plies stacked on a table, pieces side by side. Each is meshed on its
+  // own; all share `material`.
+  std::vector<Fabric> other_parts;
   Material material;
   std::vector<Support> supports;
   std::vector<Gripper> grippers;
@@ -390,6 +401,9 @@ struct Scene {
 };
 
 inline constexpr int kSceneFormatVersion = 1;
+
+// Every part of the fabric, the first (scene.fabric) first.
+std::vector<const Fabric*> FabricParts(const Scene& scene);
 
 // Names used in files, reports and messages.
 const char* ToString(StageKind kind);

@@ -22,6 +22,9 @@ std::optional<std::string> SequencingRefusal(const Scene& scene, int factor) {
     return "stage '" + stage.name + "' moves or releases something: its end depends on the path";
   if (scene.contact && scene.contact->friction > 0)
     return std::string("with friction the drape's end depends on the path");
+  if (!scene.other_parts.empty())
+    return std::string("sequencing needs a fabric of one part; this one has ") +
+           std::to_string(scene.other_parts.size() + 1);
   if (!std::holds_alternative<RectangleOutline>(scene.fabric.outline) ||
       !scene.fabric.mesh.elements)
     return std::string("sequencing needs a rectangle meshed by element counts");

@@ -71,6 +71,7 @@ MeshSpec ScaledMesh(const MeshSpec& mesh, double scale) {
 
 Scene SceneOnSolvedMesh(Scene scene) {
   scene.fabric.mesh = ScaledMesh(scene.fabric.mesh, scene.solver.mesh_scale);
+  for (Fabric& part : scene.other_parts) part.mesh = ScaledMesh(part.mesh, scene.solver.mesh_scale);
   scene.solver.mesh_scale = 1;
   return scene;
 }

@@ -92,6 +92,10 @@ ErrorEstimate RichardsonEstimate(const std::vector<std::string>& names,
 
 std::optional<Scene> CoarsenedScene(const Scene& scene, int factor, std::string* why) {
   Scene coarse = scene;
+  if (!scene.other_parts.empty()) {
+    if (why) *why = "the error estimate coarsens a fabric of one part; this one has several";
+    return std::nullopt;
+  }
   if (scene.fabric.mesh.elements) {
     auto& e = *coarse.fabric.mesh.elements;
     bool any = false;

@@ -7,6 +7,7 @@
 
 #include "core/contact/contact_setup.h"
 #include "core/linalg/machine_resources.h"
+#include "core/model/fabric_mesh.h"
 #include "core/model/scene_error.h"
 #include "core/model/solver_preset.h"
 #include "core/solve/gripper_drag.h"
@@ -42,9 +43,9 @@ void PrepareRun(SolveRun& run) {
     run.self_contact = std::make_unique<SelfContact>(
         model.mesh, SelfContactSettingsFor(run.scene, model, run.summary.layer_exclusion));
   run.imperfection = Eigen::VectorXd::Zero(model.DofCount());
+  const Eigen::VectorXd flat = PartElevations(run.scene, model.mesh);
   for (int i = 0; i < model.NodeCount(); ++i)
-    run.imperfection(kDofsPerNode * i + 2) =
-        model.mesh.positions(i, 2) - run.scene.fabric.elevation;
+    run.imperfection(kDofsPerNode * i + 2) = model.mesh.positions(i, 2) - flat(i);
   if (run.imperfection.cwiseAbs().maxCoeff() == 0) run.imperfection.resize(0);
   run.retired_timers = SystemTimers();
   run.system.reset();

@@ -92,6 +92,35 @@ TEST(PatternCli, ExportsTheOutlineOnTheTableAsDxf) {
   EXPECT_GT(drooped, 0.0);
 }
 
+// Two BACK panels side by side, each its own part, each hanging from its
+// clamped hem: the DXF export has a piece per part, both flat at step 0.
+TEST(PatternCli, ExportsAPiecePerPart) {
+  TempDir dir("pattern-cli-parts");
+  MakePattern(dir / "p.dxf");
+  nlohmann::json scene = BackPanel("p.dxf");
+  const nlohmann::json back = scene["fabric"];
+  scene["fabric"] = nlohmann::json::array({back, back});
+  scene["fabric"][0]["name"] = "left";
+  scene["fabric"][1]["name"] = "right";
+  scene["fabric"][1]["outline"]["pattern"]["at"] = {"50 cm", 0};
+  const auto file = WriteJson(scene, dir / "scene.json");
+  const CommandResult r = RunCommand("run " + Quote(file) + " -o " + Quote(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json result = ReadJson(dir / "out" / "result.json");
+  ASSERT_EQ(result["mesh"]["parts"].size(), 2u);
+  EXPECT_EQ(result["mesh"]["parts"][1]["name"], "right");
+  EXPECT_EQ(result["mesh"]["parts"][1]["first_node"], result["mesh"]["parts"][0]["nodes"]);
+  ASSERT_EQ(RunCommand("export " + Quote(dir / "out") + " -o " + Quote(dir / "dxf") +
+                       " --format dxf --step 0")
+                .exit_code,
+            0);
+  const nlohmann::json d = test::DescribedByEzdxf(dir / "dxf" / "outline-step-0.dxf");
+  ASSERT_EQ(d["pieces"].size(), 2u);
+  // BACK as the script draws it: a trapezoid 36 and 28 cm wide, 28 cm high.
+  for (const char* name : {"BACK", "BACK-right"})
+    EXPECT_NEAR(d["pieces"][name]["cut_area"].get<double>(), 0.5 * (360 + 280) * 280, 1e-3) << name;
+}
+
 TEST(PatternCli, ListsThePiecesOfAFile) {
   TempDir dir("pattern-cli-list");
   MakePattern(dir / "p.dxf");

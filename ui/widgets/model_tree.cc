@@ -109,7 +109,15 @@ void ModelTree::refresh() {
   const QSignalBlocker block(this);  // rebuilding is not a choice
   clear();
   auto* root = invisibleRootItem();
-  Add(root, "Fabric", OutlineSummary(s.fabric, units_), Part::kFabric);
+  // Of several parts, the editor edits the first; the tree says so.
+  Add(root,
+      "Fabric",
+      s.other_parts.empty()
+          ? OutlineSummary(s.fabric, units_)
+          : QString("%1 parts; the editor shows '%2': %3")
+                .arg(s.other_parts.size() + 1)
+                .arg(QString::fromStdString(s.fabric.name), OutlineSummary(s.fabric, units_)),
+      Part::kFabric);
   Add(root,
       "Material",
       QString("h = %1, w = %2")
