@@ -6,7 +6,9 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
+#include <QSpinBox>
 #include <QUndoStack>
 
 #include <cmath>
@@ -20,12 +22,14 @@
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
 #include "ui/render/frame_renderer.h"
+#include "ui/widgets/holds_panel.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/material_editor.h"
 #include "ui/widgets/pattern_import_dialog.h"
 #include "ui/widgets/property_panel.h"
 #include "ui/widgets/quantity_field.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/selection_rule.h"
 #include "ui/widgets/view_controller.h"
 #include "widgets/gui_test.h"
 
@@ -81,6 +85,23 @@ TEST_F(Widgets, APatternPieceIsImportedPlacedAndUndone) {
   // The drawn panel less its 5 × 4 cm cut-out, meshed.
   ASSERT_NE(doc->model(), nullptr) << doc->modelProblem().toStdString();
   EXPECT_NEAR(MeshArea(*doc->model()) / ((40 * 30 + 40 + -20) * 1e-4), 1.0, 1e-3);
+
+  // The grippers' editor lists the piece's marks, and holds by one: notch
+  // 2, at (40, 15) cm of the piece, placed turned by 90° and moved by
+  // (10 cm, 0): at (−5 cm, 40 cm), where a node of the mesh now sits.
+  HoldsPanel* grippers = window.grippers();
+  EXPECT_EQ(grippers->rule()->marks()->text().toStdString(),
+            "FRONT: 4 notches, 2 drill holes, 1 internal line");
+  grippers->rule()->mark()->setValue(2);
+  ASSERT_TRUE(grippers->add("notch", 0)) << grippers->message().toStdString();
+  const Gripper& held = doc->scene().grippers.back();
+  EXPECT_EQ(held.select, (Selection{PatternMarkSelection{PatternMark::kNotch, 2}, std::nullopt}));
+  ASSERT_EQ(doc->model()->grippers.back().nodes.size(), 1u);
+  const int node = doc->model()->grippers.back().nodes[0];
+  EXPECT_LT(
+      (doc->model()->mesh.positions.row(node).head<2>() - Eigen::RowVector2d(-0.05, 0.40)).norm(),
+      1e-9);
+  doc->undoStack()->undo();
 
   // The view draws the piece's grain line on the fabric; the block it
   // replaced had none.

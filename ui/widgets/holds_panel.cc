@@ -93,6 +93,7 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
       role == Role::kSupports ? SceneDocument::Part::kSupports : SceneDocument::Part::kGrippers,
       [this] { refresh(); },
       this);
+  rule_->followFabric(document_);
   refresh();
 }
 

@@ -58,6 +58,7 @@ LoadsPanel::LoadsPanel(SceneDocument* document, QWidget* parent)
   connect(list_, &QListWidget::currentRowChanged, this, &LoadsPanel::refresh);
   new ScenePartWatch(
       document_, SceneDocument::Part::kLoads, [this] { refresh(); }, this);
+  rule_->followFabric(document_);
   refresh();
 }
 

@@ -4,11 +4,14 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QSpinBox>
 
 #include <cmath>
 
 #include "core/model/overloaded.h"
 #include "core/model/units.h"
+#include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/typed_json.h"
 
 namespace drape {
@@ -48,11 +51,22 @@ QString DescribeSelection(const Selection& selection, UnitSystem system) {
 SelectionRuleEditor::SelectionRuleEditor(QFormLayout* form, const QString& label, QWidget* parent)
     : QObject(parent) {
   rule_ = new QComboBox(parent);
-  rule_->addItems({"left", "right", "bottom", "top", "corners", "point", "circle", "picked"});
+  rule_->addItems({"left",
+                   "right",
+                   "bottom",
+                   "top",
+                   "corners",
+                   "point",
+                   "circle",
+                   "picked",
+                   "notch",
+                   "drill hole",
+                   "internal line"});
   rule_->setToolTip(
       "an edge, the corners, the node nearest a point, every node within a radius of "
-      "a point (a drape tester's disc), or the nodes picked in the view (Pick nodes, "
-      "then click the fabric)");
+      "a point (a drape tester's disc), the nodes picked in the view (Pick nodes, "
+      "then click the fabric), or a pattern piece's notch, drill hole or internal line "
+      "(the mark row's number)");
   point_ = new QLineEdit("0, 0", parent);
   point_->setPlaceholderText("x, y (e.g. 5 cm, 0)");
   point_->setToolTip(
@@ -61,10 +75,19 @@ SelectionRuleEditor::SelectionRuleEditor(QFormLayout* form, const QString& label
   radius_->setPlaceholderText("e.g. 9 cm");
   radius_->setToolTip("the circle's radius: every node within it is selected; units allowed");
   picked_label_ = new QLabel("no nodes picked", parent);
+  mark_ = new QSpinBox(parent);
+  mark_->setRange(1, 9999);
+  mark_->setToolTip(
+      "which notch, drill hole or internal line of the pattern piece, counted from 1 in "
+      "the pattern file's order");
+  marks_ = new QLabel("the fabric is not a pattern piece", parent);
+  marks_->setWordWrap(true);
   form->addRow(label, rule_);
   form->addRow("point", point_);
   form->addRow("radius", radius_);
   form->addRow("picked", picked_label_);
+  form->addRow("mark", mark_);
+  form->addRow("marks", marks_);
 }
 
 void SelectionRuleEditor::show(const Selection& selection) {
@@ -79,6 +102,10 @@ void SelectionRuleEditor::show(const Selection& selection) {
                    radius_->setText(QuantityText(c.radius, Measure::kLength, units_));
                  },
                  [&](const CornersSelection&) { rule_->setCurrentText("corners"); },
+                 [&](const PatternMarkSelection& m) {
+                   rule_->setCurrentText(PatternMarkName(m.mark));
+                   mark_->setValue(m.index);
+                 },
                  [&](const EdgeSelection& e) {
                    if (e.side != Side::kBoundary) rule_->setCurrentIndex(static_cast<int>(e.side));
                  },
@@ -100,6 +127,32 @@ void SelectionRuleEditor::setUnitSystem(UnitSystem system) {
   } catch (const UnitError&) {
     // As the point: Add says what is wrong.
   }
+}
+
+void SelectionRuleEditor::setFabric(const Fabric& fabric) {
+  const auto* pattern = std::get_if<PatternOutline>(&fabric.outline);
+  if (!pattern) {
+    marks_->setText("the fabric is not a pattern piece");
+    return;
+  }
+  const PatternPiece& piece = pattern->shape;
+  auto count = [](std::size_t n, const char* one, const char* many) {
+    return QString("%1 %2").arg(n).arg(n == 1 ? one : many);
+  };
+  marks_->setText(QString("%1: %2, %3, %4")
+                      .arg(QString::fromStdString(pattern->piece),
+                           count(piece.notches.size(), "notch", "notches"),
+                           count(piece.drills.size(), "drill hole", "drill holes"),
+                           count(piece.internal_lines.size(), "internal line", "internal lines")));
+}
+
+void SelectionRuleEditor::followFabric(SceneDocument* document) {
+  new ScenePartWatch(
+      document,
+      SceneDocument::Part::kFabric,
+      [this, document] { setFabric(document->scene().fabric); },
+      this);
+  setFabric(document->scene().fabric);
 }
 
 void SelectionRuleEditor::setPicked(const std::vector<int>& nodes,
@@ -153,6 +206,9 @@ std::optional<Selection> SelectionRuleEditor::selection(const QString& rule,
     return Selection{CircleSelection{{x, y}, radius}, std::nullopt};
   }
   if (rule == "picked") return picked(problem);
+  for (PatternMark kind : {PatternMark::kNotch, PatternMark::kDrill, PatternMark::kInternalLine})
+    if (rule == PatternMarkName(kind))
+      return Selection{PatternMarkSelection{kind, mark_->value()}, std::nullopt};
   const QStringList sides = {"left", "right", "bottom", "top"};
   if (!sides.contains(rule)) {
     if (problem) *problem = "no such rule: " + rule;

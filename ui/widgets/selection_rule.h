@@ -17,8 +17,11 @@ class QComboBox;
 class QFormLayout;
 class QLabel;
 class QLineEdit;
+class QSpinBox;
 
 namespace drape {
+
+class SceneDocument;
 
 // "left edge", "corners", "point (10 cm, 0)", "line (0, 0) to (20 cm, 0)",
 // "3 nodes": coordinates in `system`'s unit of length.
@@ -31,8 +34,9 @@ class SelectionRuleEditor : public QObject {
   SelectionRuleEditor(QFormLayout* form, const QString& label, QWidget* parent);
 
   // rule: "left", "right", "bottom", "top", "corners", "point" (at x, y
-  // [m]), "circle" (centre x, y [m], the radius as the radius row says) or
-  // "picked". Empty with the reason in `problem` when the rule
+  // [m]), "circle" (centre x, y [m], the radius as the radius row says),
+  // "notch", "drill hole", "internal line" (a pattern piece's, the number
+  // the mark row says) or "picked". Empty with the reason in `problem` when the rule
   // cannot be made (nothing picked, an unknown rule).
   std::optional<Selection> selection(const QString& rule,
                                      double x,
@@ -50,15 +54,24 @@ class SelectionRuleEditor : public QObject {
   void show(const Selection& selection);
   // The point shown in `system`'s unit of length (typing takes any unit).
   void setUnitSystem(UnitSystem system);
+  // The marks row lists what `fabric`'s pattern piece has to hold by:
+  // "FRONT: 4 notches, 2 drill holes, 1 internal line".
+  void setFabric(const Fabric& fabric);
+  // The marks row follows `document`'s fabric from now on.
+  void followFabric(SceneDocument* document);
 
   QComboBox* rule() const { return rule_; }
   QLineEdit* point() const { return point_; }
   QLineEdit* radius() const { return radius_; }
+  QSpinBox* mark() const { return mark_; }
+  QLabel* marks() const { return marks_; }
 
  private:
   QComboBox* rule_;
   QLineEdit* point_;
   QLineEdit* radius_;
+  QSpinBox* mark_;
+  QLabel* marks_;
   UnitSystem units_ = UnitSystem::kSI;
   QLabel* picked_label_;
   std::vector<int> picked_;
