@@ -4,11 +4,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "core/model/string_format.h"
 
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A mesh's scale: one factor for every axis, or [sx, sy, sz]. Each factor
+// positive (a negative one would mirror the form inside out) and within
+// 1e-6..1e6 (a file in millimetres needs 0.001).
+Vec3 ReadMeshScale(const JsonCursor& c) {
+  std::vector<JsonCursor> factors;
+  if (c.value().is_array())
+    factors = c.Items(3);
+  else
+    factors = {c};
+  Vec3 scale{};
+  for (std::size_t k = 0; k < factors.size(); ++k) {
+    const double f = factors[k].Number();
+    if (!(f >= 1e-6 && f <= 1e6))
+      factors[k].Fail(
+          Format("a scale factor must be between 1e-6 and 1e6 (a positive number; "
+                 "a negative one would turn the mesh inside out), found %g",
+                 f));
+    scale[k] = f;
+  }
+  if (factors.size() == 1) scale = {scale[0], scale[0], scale[0]};
+  return scale;
+}
 
 }  // namespace
 
@@ -63,8 +89,11 @@ Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
     }
     default: {
       auto m = c["mesh"];
-      m.ExpectObject({"file"});
+      m.ExpectObject({"file", "scale", "rotation_deg", "at"});
       MeshShape mesh{ReadFileReference(m["file"]), {}};
+      if (auto s = m.Find("scale")) mesh.scale = ReadMeshScale(*s);
+      if (auto r = m.Find("rotation_deg")) mesh.rotation_deg = ReadAngleDeg(*r);
+      if (auto at = m.Find("at")) mesh.at = at->QuantityVec3(dim::kLength);
       const fs::path file(mesh.file);
       mesh.resolved_path =
           (file.is_absolute() ? file : fs::absolute(base_ / file)).lexically_normal().string();

@@ -164,7 +164,16 @@ json ToJson(const ObstacleShape& shape) {
             return json{{"sphere", {{"center", s.center}, {"radius", s.radius}}}};
           },
           [](const MeshShape& m) {
-            return json{{"mesh", {{"file", m.file}}}};
+            json mesh{{"file", m.file}};
+            if (m.scale != Vec3{1, 1, 1}) {
+              if (m.scale[0] == m.scale[1] && m.scale[1] == m.scale[2])
+                mesh["scale"] = m.scale[0];
+              else
+                mesh["scale"] = m.scale;
+            }
+            if (m.rotation_deg != 0) mesh["rotation_deg"] = m.rotation_deg;
+            if (m.at != Vec3{0, 0, 0}) mesh["at"] = m.at;
+            return json{{"mesh", mesh}};
           },
       },
       shape);

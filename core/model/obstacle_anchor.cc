@@ -21,7 +21,7 @@ std::optional<Eigen::Vector3d> ObstacleAnchor(const Obstacle& obstacle) {
           },
           [](const CylinderShape& c) -> std::optional<Eigen::Vector3d> { return ToEigen(c.point); },
           [](const SphereShape& s) -> std::optional<Eigen::Vector3d> { return ToEigen(s.center); },
-          [](const MeshShape&) -> std::optional<Eigen::Vector3d> { return std::nullopt; },
+          [](const MeshShape& m) -> std::optional<Eigen::Vector3d> { return ToEigen(m.at); },
       },
       obstacle.shape);
 }
@@ -36,7 +36,7 @@ Obstacle Translated(const Obstacle& obstacle, const Eigen::Vector3d& by) {
                  },
                  [&](CylinderShape& c) { Add(c.point, by); },
                  [&](SphereShape& s) { Add(s.center, by); },
-                 [](MeshShape&) {},
+                 [&](MeshShape& m) { Add(m.at, by); },
              },
              moved.shape);
   return moved;

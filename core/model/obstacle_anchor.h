@@ -10,11 +10,11 @@
 namespace drape {
 
 // A plane's point, a box's centre, a cylinder's point on its axis, a
-// sphere's centre. None for a triangle mesh: a scene places a mesh where
-// its file puts it, so there is nothing to move.
+// sphere's centre, where a triangle mesh's file origin is placed (`at`).
+// None is kept for a shape that has no such point.
 std::optional<Eigen::Vector3d> ObstacleAnchor(const Obstacle& obstacle);
 
-// `obstacle` translated by `by` (a mesh is returned as it is).
+// `obstacle` translated by `by`.
 Obstacle Translated(const Obstacle& obstacle, const Eigen::Vector3d& by);
 
 }  // namespace drape

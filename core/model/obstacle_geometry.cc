@@ -1,5 +1,6 @@
 #include "core/model/obstacle_geometry.h"
 
+#include "core/model/mesh_placement.h"
 #include "core/model/overloaded.h"
 #include "core/model/triangle_mesh_geometry.h"
 #include "core/model/vec3_eigen.h"
@@ -47,6 +48,10 @@ class SphereGeometry final : public ObstacleGeometry {
     if (rho == 0.0) return {-radius_, Vector3d::UnitZ(), Matrix3d::Zero()};
     const Vector3d n = r / rho;
     return {rho - radius_, n, (Matrix3d::Identity() - n * n.transpose()) / rho};
+  }
+  std::optional<Eigen::AlignedBox3d> Bounds() const override {
+    const Vector3d r = Vector3d::Constant(radius_);
+    return Eigen::AlignedBox3d(center_ - r, center_ + r);
   }
 
  private:
@@ -96,6 +101,15 @@ class CylinderGeometry final : public ObstacleGeometry {
     if (cap > side) return {cap, sign * axis_, Matrix3d::Zero()};
     return {side, e, side_hessian};
   }
+  // A capped cylinder reaches, along each world axis k, half its length
+  // times |a_k| from its middle, plus its radius times the sine √(1 − a_k²).
+  std::optional<Eigen::AlignedBox3d> Bounds() const override {
+    if (half_length_ < 0.0) return std::nullopt;
+    const Eigen::Array3d a = axis_.array().abs();
+    const Vector3d reach =
+        (half_length_ * a + radius_ * (1.0 - a.square()).max(0.0).sqrt()).matrix();
+    return Eigen::AlignedBox3d(point_ - reach, point_ + reach);
+  }
 
  private:
   Vector3d point_, axis_;
@@ -113,6 +127,10 @@ class BoxGeometry final : public ObstacleGeometry {
     const Vector3d lo = ToEigen(s.min), hi = ToEigen(s.max);
     center_ = 0.5 * (lo + hi);
     inner_half_ = 0.5 * (hi - lo) - Vector3d::Constant(radius_);
+  }
+  std::optional<Eigen::AlignedBox3d> Bounds() const override {
+    const Vector3d half = inner_half_ + Vector3d::Constant(radius_);
+    return Eigen::AlignedBox3d(center_ - half, center_ + half);
   }
 
   DistanceQuery Query(const Vector3d& x) const override {
@@ -153,26 +171,26 @@ class BoxGeometry final : public ObstacleGeometry {
 std::unique_ptr<ObstacleGeometry> MakeObstacleGeometry(const Obstacle& obstacle,
                                                        const std::filesystem::path& scene_dir,
                                                        const std::string& where) {
-  return std::visit(Overloaded{[](const PlaneShape& s) -> std::unique_ptr<ObstacleGeometry> {
-                                 return std::make_unique<PlaneGeometry>(s);
-                               },
-                               [](const SphereShape& s) -> std::unique_ptr<ObstacleGeometry> {
-                                 return std::make_unique<SphereGeometry>(s);
-                               },
-                               [](const CylinderShape& s) -> std::unique_ptr<ObstacleGeometry> {
-                                 return std::make_unique<CylinderGeometry>(s);
-                               },
-                               [](const BoxShape& s) -> std::unique_ptr<ObstacleGeometry> {
-                                 return std::make_unique<BoxGeometry>(s);
-                               },
-                               [&](const MeshShape& s) -> std::unique_ptr<ObstacleGeometry> {
-                                 const std::filesystem::path file =
-                                     s.resolved_path.empty()
-                                         ? scene_dir / s.file
-                                         : std::filesystem::path(s.resolved_path);
-                                 return MakeTriangleMeshGeometry(file, where + ".mesh.file");
-                               }},
-                    obstacle.shape);
+  return std::visit(
+      Overloaded{[](const PlaneShape& s) -> std::unique_ptr<ObstacleGeometry> {
+                   return std::make_unique<PlaneGeometry>(s);
+                 },
+                 [](const SphereShape& s) -> std::unique_ptr<ObstacleGeometry> {
+                   return std::make_unique<SphereGeometry>(s);
+                 },
+                 [](const CylinderShape& s) -> std::unique_ptr<ObstacleGeometry> {
+                   return std::make_unique<CylinderGeometry>(s);
+                 },
+                 [](const BoxShape& s) -> std::unique_ptr<ObstacleGeometry> {
+                   return std::make_unique<BoxGeometry>(s);
+                 },
+                 [&](const MeshShape& s) -> std::unique_ptr<ObstacleGeometry> {
+                   const std::filesystem::path file = s.resolved_path.empty()
+                                                          ? scene_dir / s.file
+                                                          : std::filesystem::path(s.resolved_path);
+                   return MakeTriangleMeshGeometry(file, where + ".mesh.file", MeshPlacement(s));
+                 }},
+      obstacle.shape);
 }
 
 }  // namespace drape

@@ -10,9 +10,11 @@
 #include "core/model/scene.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace drape {
 
@@ -30,6 +32,9 @@ class ObstacleGeometry {
   // function outside it, so d(x + s) ≥ d(x) + ∇d(x)·s for every s (what a
   // step's collision bound relies on).
   virtual bool IsConvex() const { return false; }
+  // The smallest axis-aligned box holding the obstacle; none when it has no
+  // end (a plane, an endless rod).
+  virtual std::optional<Eigen::AlignedBox3d> Bounds() const { return std::nullopt; }
 };
 
 // The geometry of a scene's obstacle. A mesh obstacle's file is read relative

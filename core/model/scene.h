@@ -255,7 +255,17 @@ struct MeshShape {
   std::string file;  // OBJ or STL, as written in the scene (relative to it)
   // Where the reader found it (absolute); not part of the scene's meaning.
   std::string resolved_path;
-  friend bool operator==(const MeshShape& a, const MeshShape& b) { return a.file == b.file; }
+  // Its place in the world (core/model/mesh_placement.h): the file's
+  // coordinates scaled about its origin (per axis, each > 0), turned about
+  // the vertical through the origin, then the origin moved to `at`. A form
+  // is sized, turned to face the fabric and stood where it is wanted.
+  Vec3 scale{1, 1, 1};
+  double rotation_deg = 0;
+  Vec3 at{0, 0, 0};
+  friend bool operator==(const MeshShape& a, const MeshShape& b) {
+    return a.file == b.file && a.scale == b.scale && a.rotation_deg == b.rotation_deg &&
+           a.at == b.at;
+  }
 };
 using ObstacleShape = std::variant<PlaneShape, BoxShape, CylinderShape, SphereShape, MeshShape>;
 

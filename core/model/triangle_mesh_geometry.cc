@@ -44,6 +44,7 @@ class TriangleMeshGeometry final : public ObstacleGeometry {
  public:
   TriangleMeshGeometry(const RawMesh& mesh, const std::vector<HalfEdge>& edges);
   DistanceQuery Query(const Vector3d& x) const override;
+  std::optional<Eigen::AlignedBox3d> Bounds() const override { return box_; }
 
  private:
   // A node's children are the next node and node `right`; a leaf holds
@@ -81,6 +82,7 @@ class TriangleMeshGeometry final : public ObstacleGeometry {
   std::vector<std::array<int, 3>> corner_vertex_;
   std::vector<Vector3d> vertex_normal_;  // angle-weighted, per vertex
   double tiny_;                          // below this distance the direction x − c is noise
+  Eigen::AlignedBox3d box_;
 };
 
 TriangleMeshGeometry::TriangleMeshGeometry(const RawMesh& mesh,
@@ -102,6 +104,7 @@ TriangleMeshGeometry::TriangleMeshGeometry(const RawMesh& mesh,
     box.extend(bounds[t]);
   }
   tiny_ = 1e-12 * box.diagonal().norm();
+  box_ = box;
 
   std::vector<std::array<Vector3d, 3>> edge_normal(n);
   for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {  // checked: exactly pairs
@@ -237,9 +240,13 @@ DistanceQuery TriangleMeshGeometry::Query(const Vector3d& x) const {
 }  // namespace
 
 std::unique_ptr<ObstacleGeometry> MakeTriangleMeshGeometry(const std::filesystem::path& file,
-                                                           const std::string& where) {
+                                                           const std::string& where,
+                                                           const Eigen::Affine3d& placement) {
   const Reporter report(file, where);
   RawMesh mesh = ReadMesh(file, report);
+  // Placed before the checks: a scaling small enough to make a triangle
+  // degenerate is reported as such.
+  for (Vector3d& v : mesh.vertices) v = placement * v;
   const std::vector<HalfEdge> edges = CheckAndOrient(mesh, report);
   return std::make_unique<TriangleMeshGeometry>(mesh, edges);
 }

@@ -16,8 +16,12 @@ namespace drape {
 // "obstacles[1].mesh.file") when the file cannot be read, is neither OBJ nor
 // STL, has a coordinate beyond 1e50 in magnitude, no triangles, degenerate
 // triangles, or is not closed (an edge not shared by exactly two triangles) —
-// the message says which and where.
-std::unique_ptr<ObstacleGeometry> MakeTriangleMeshGeometry(const std::filesystem::path& file,
-                                                           const std::string& where);
+// the message says which and where. The file's vertices are then placed in
+// the world by `placement` (a scaling that keeps the orientation, a
+// rotation, a move).
+std::unique_ptr<ObstacleGeometry> MakeTriangleMeshGeometry(
+    const std::filesystem::path& file,
+    const std::string& where,
+    const Eigen::Affine3d& placement = Eigen::Affine3d::Identity());
 
 }  // namespace drape

@@ -387,5 +387,35 @@ TEST(SceneReader, ReleasedGripperCannotMoveLater) {
   EXPECT_EQ(ErrorOf(doc), "stages[2].moves[0].gripper: gripper 'g' was released in stage 'drop'");
 }
 
+// A mesh obstacle's placement: a scale (one factor or three), a turn about
+// the vertical and where its origin goes, each in the user's units; written
+// back the same; a scale that would mirror or vanish the form names its key
+// and the value.
+TEST(SceneReader, MeshObstacleIsScaledTurnedAndPlaced) {
+  json doc = Minimal();
+  const std::string form = (test::SourceDir() / "resources/forms/dress-form.obj").string();
+  doc["obstacles"] = json::parse(R"([{"name": "form", "mesh": {"scale": [1.1, 1.1, 1.2],
+      "rotation_deg": "0.5 rad", "at": ["10 cm", 0, "-5 mm"]}}])");
+  doc["obstacles"][0]["mesh"]["file"] = form;
+  const Scene scene = SceneFromJson(doc);
+  const auto& mesh = std::get<MeshShape>(scene.obstacles[0].shape);
+  EXPECT_EQ(mesh.scale, (Vec3{1.1, 1.1, 1.2}));
+  EXPECT_NEAR(mesh.rotation_deg, 0.5 * 180 / M_PI, 1e-12);
+  EXPECT_EQ(mesh.at, (Vec3{0.1, 0, -0.005}));
+  EXPECT_EQ(ParseScene(WriteSceneText(scene)).obstacles, scene.obstacles);
+
+  doc["obstacles"][0]["mesh"]["scale"] = 2;
+  EXPECT_EQ(std::get<MeshShape>(SceneFromJson(doc).obstacles[0].shape).scale, (Vec3{2, 2, 2}));
+  doc["obstacles"][0]["mesh"]["scale"] = -2;
+  EXPECT_EQ(ErrorOf(doc),
+            "obstacles[0].mesh.scale: a scale factor must be between 1e-6 and 1e6 (a positive "
+            "number; a negative one would turn the mesh inside out), found -2");
+  doc["obstacles"][0]["mesh"]["scale"] = {1, 0, 1};
+  EXPECT_EQ(ErrorOf(doc).rfind("obstacles[0].mesh.scale[1]: a scale factor must be", 0), 0u);
+  doc["obstacles"][0]["mesh"]["scale"] = {1, 2};
+  EXPECT_EQ(ErrorOf(doc).rfind("obstacles[0].mesh.scale: expected 3 values", 0), 0u)
+      << ErrorOf(doc);
+}
+
 }  // namespace
 }  // namespace drape

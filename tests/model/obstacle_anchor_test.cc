@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/model/obstacle_geometry.h"
+#include "support/test_paths.h"
 
 namespace drape {
 namespace {
@@ -29,7 +30,9 @@ TEST(ObstacleAnchor, IsWhereEachShapeIsPlaced) {
   EXPECT_EQ(*ObstacleAnchor({"rod", CylinderShape{{0.1, 0, 0}, {0, 1, 0}, 0.01, std::nullopt}}),
             Eigen::Vector3d(0.1, 0, 0));
   EXPECT_EQ(*ObstacleAnchor({"ball", SphereShape{{0, 0.2, 0}, 0.05}}), Eigen::Vector3d(0, 0.2, 0));
-  EXPECT_FALSE(ObstacleAnchor({"form", MeshShape{"form.obj", ""}}));
+  MeshShape form{"form.obj", ""};
+  form.at = {0.1, -0.2, 0.3};
+  EXPECT_EQ(*ObstacleAnchor({"form", form}), Eigen::Vector3d(0.1, -0.2, 0.3));
 }
 
 TEST(ObstacleAnchor, TranslatedShapesKeepTheirDistanceFields) {
@@ -38,8 +41,12 @@ TEST(ObstacleAnchor, TranslatedShapesKeepTheirDistanceFields) {
   ExpectMovedRigidly({"block", BoxShape{{-0.1, -0.2, -0.3}, {0.1, 0.2, 0.1}, 0.01}}, by);
   ExpectMovedRigidly({"rod", CylinderShape{{0.1, 0, 0}, {0, 0.6, 0.8}, 0.01, 0.3}}, by);
   ExpectMovedRigidly({"ball", SphereShape{{0, 0.2, 0}, 0.05}}, by);
-  const Obstacle mesh{"form", MeshShape{"form.obj", ""}};
-  EXPECT_EQ(Translated(mesh, by), mesh);
+  const std::string cube = (test::SourceDir() / "resources/forms/unit-cube.stl").string();
+  MeshShape turned{cube, cube};
+  turned.scale = {0.2, 0.3, 0.4};
+  turned.rotation_deg = 30;
+  turned.at = {0.1, 0, -0.2};
+  ExpectMovedRigidly({"form", turned}, by);
 }
 
 }  // namespace

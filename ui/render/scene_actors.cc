@@ -20,6 +20,7 @@
 #include <stdexcept>
 
 #include "core/fe/path_handles.h"
+#include "core/model/mesh_placement.h"
 #include "core/model/overloaded.h"
 #include "core/model/vec3_eigen.h"
 
@@ -135,18 +136,20 @@ vtkSmartPointer<vtkPolyData> ObstacleSurface(const Obstacle& obstacle,
           },
           [&](const MeshShape& s) {
             const std::filesystem::path file = s.resolved_path.empty() ? s.file : s.resolved_path;
-            vtkSmartPointer<vtkPolyData> out;
+            vtkSmartPointer<vtkPolyDataAlgorithm> reader;
             if (file.extension() == ".obj" || file.extension() == ".OBJ") {
-              auto reader = vtkSmartPointer<vtkOBJReader>::New();
-              reader->SetFileName(file.string().c_str());
-              reader->Update();
-              out = reader->GetOutput();
+              auto obj = vtkSmartPointer<vtkOBJReader>::New();
+              obj->SetFileName(file.string().c_str());
+              reader = obj;
             } else {
-              auto reader = vtkSmartPointer<vtkSTLReader>::New();
-              reader->SetFileName(file.string().c_str());
-              reader->Update();
-              out = reader->GetOutput();
+              auto stl = vtkSmartPointer<vtkSTLReader>::New();
+              stl->SetFileName(file.string().c_str());
+              reader = stl;
             }
+            auto placement = vtkSmartPointer<vtkTransform>::New();
+            const Eigen::Matrix<double, 4, 4, Eigen::RowMajor> rows = MeshPlacement(s).matrix();
+            placement->SetMatrix(rows.data());  // VTK reads the elements by rows
+            const vtkSmartPointer<vtkPolyData> out = Transformed(reader, placement);
             if (!out || out->GetNumberOfCells() == 0)
               throw std::runtime_error("cannot draw obstacle '" + obstacle.name + "' from " +
                                        file.string());
