@@ -9,6 +9,7 @@
 
 #include "app/commands.h"
 #include "core/contact/contact_setup.h"
+#include "core/fe/fabric_plausibility.h"
 #include "core/io/scene_reader.h"
 #include "core/io/scene_writer.h"
 #include "core/model/fabric_mesh.h"
@@ -64,6 +65,9 @@ int RunValidate(const ValidateArgs& args) {
     // Mesh obstacles are read and checked (closed, readable) here too.
     for (size_t i = 0; i < scene.obstacles.size(); ++i)
       MakeObstacleGeometry(scene.obstacles[i], ".", "obstacles[" + std::to_string(i) + "]");
+    // Values no fabric has (most often a unit that slipped) are said, not refused.
+    for (const Implausible& value : ImplausibleFabric(scene.material))
+      std::cerr << "drape validate: warning: " << Describe(value) << "\n";
     if (args.resolved)
       std::cout << WriteSceneText(scene);
     else

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "core/model/scene_error.h"
 
@@ -40,11 +39,25 @@ std::string QuoteList(std::initializer_list<std::string_view> words) {
   return out;
 }
 
-std::string FormatNumber(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
+// A value as the user wrote it in the file: a string in double quotes, a
+// number as JSON writes it (shortest form), true, false, null; an object or
+// array by its kind only.
+std::string AsTyped(const nlohmann::json& v) {
+  if (v.is_string() || v.is_number() || v.is_boolean() || v.is_null()) return v.dump();
+  return TypeName(v);
+}
+
+// "a string "5 cm"", "the number 80.5": what was found, with its value.
+std::string FoundValue(const nlohmann::json& v) {
+  if (v.is_string()) return "a string " + v.dump();
+  if (v.is_number()) return "the number " + v.dump();
+  return TypeName(v);
+}
+
+// "a length", "an angle", "a force/area".
+std::string WithArticle(const std::string& noun) {
+  const bool vowel = !noun.empty() && std::string("aeiou").find(noun[0]) != std::string::npos;
+  return (vowel ? "an " : "a ") + noun;
 }
 
 }  // namespace
@@ -106,7 +119,7 @@ JsonCursor JsonCursor::Child(size_t index) const {
 }
 
 void JsonCursor::ExpectObject(std::initializer_list<std::string_view> allowed) const {
-  if (!value_->is_object()) Fail(std::string("expected an object, found ") + TypeName(*value_));
+  if (!value_->is_object()) Fail("expected an object, found " + FoundValue(*value_));
   for (const auto& [key, unused] : value_->items()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string p = path_.empty() ? key : path_ + "." + key;
@@ -121,7 +134,7 @@ bool JsonCursor::Has(std::string_view key) const {
 }
 
 JsonCursor JsonCursor::operator[](std::string_view key) const {
-  if (!value_->is_object()) Fail(std::string("expected an object, found ") + TypeName(*value_));
+  if (!value_->is_object()) Fail("expected an object, found " + FoundValue(*value_));
   if (!value_->contains(key)) Fail("missing required key '" + std::string(key) + "'");
   return Child(key);
 }
@@ -132,7 +145,7 @@ std::optional<JsonCursor> JsonCursor::Find(std::string_view key) const {
 }
 
 int JsonCursor::OneOf(std::initializer_list<std::string_view> keys) const {
-  if (!value_->is_object()) Fail(std::string("expected an object, found ") + TypeName(*value_));
+  if (!value_->is_object()) Fail("expected an object, found " + FoundValue(*value_));
   int found = -1;
   int index = 0;
   for (auto k : keys) {
@@ -149,8 +162,8 @@ int JsonCursor::OneOf(std::initializer_list<std::string_view> keys) const {
 std::vector<JsonCursor> JsonCursor::Items(std::optional<size_t> size) const {
   if (!value_->is_array()) {
     if (size)
-      Fail("expected an array of " + std::to_string(*size) + ", found " + TypeName(*value_));
-    Fail(std::string("expected an array, found ") + TypeName(*value_));
+      Fail("expected an array of " + std::to_string(*size) + ", found " + FoundValue(*value_));
+    Fail("expected an array, found " + FoundValue(*value_));
   }
   if (size && value_->size() != *size)
     Fail("expected " + std::to_string(*size) + " values, found " + std::to_string(value_->size()));
@@ -161,7 +174,7 @@ std::vector<JsonCursor> JsonCursor::Items(std::optional<size_t> size) const {
 }
 
 double JsonCursor::Number() const {
-  if (!value_->is_number()) Fail(std::string("expected a number, found ") + TypeName(*value_));
+  if (!value_->is_number()) Fail("expected a number, found " + FoundValue(*value_));
   double x = value_->get<double>();
   if (!std::isfinite(x)) Fail("expected a finite number");
   return x;
@@ -169,8 +182,8 @@ double JsonCursor::Number() const {
 
 int JsonCursor::Integer() const {
   if (!value_->is_number_integer())
-    Fail(std::string("expected an integer, found ") +
-         (value_->is_number() ? "a fractional number" : TypeName(*value_)));
+    Fail("expected an integer (a whole number), found " +
+         (value_->is_number() ? value_->dump() : FoundValue(*value_)));
   if (value_->is_number_unsigned()) {
     auto u = value_->get<std::uint64_t>();
     if (u > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
@@ -179,26 +192,25 @@ int JsonCursor::Integer() const {
   }
   auto i = value_->get<std::int64_t>();
   if (i > std::numeric_limits<int>::max() || i < std::numeric_limits<int>::min())
-    Fail("integer " + std::to_string(i) + " is too large");
+    Fail("integer " + std::to_string(i) + (i < 0 ? " is too small" : " is too large"));
   return static_cast<int>(i);
 }
 
 bool JsonCursor::Boolean() const {
-  if (!value_->is_boolean())
-    Fail(std::string("expected true or false, found ") + TypeName(*value_));
+  if (!value_->is_boolean()) Fail("expected true or false, found " + FoundValue(*value_));
   return value_->get<bool>();
 }
 
 std::string JsonCursor::String() const {
-  if (!value_->is_string()) Fail(std::string("expected a string, found ") + TypeName(*value_));
+  if (!value_->is_string()) Fail("expected a string, found " + FoundValue(*value_));
   return value_->get<std::string>();
 }
 
 double JsonCursor::Quantity(Dimension d) const {
   if (value_->is_number()) return Number();
   if (!value_->is_string())
-    Fail("expected a " + DimensionName(d) +
-         " (a number in SI units or a \"number unit\" string), found " + TypeName(*value_));
+    Fail("expected " + WithArticle(DimensionName(d)) +
+         " (a number in SI units or a \"number unit\" string), found " + FoundValue(*value_));
   try {
     return ParseQuantityAs(value_->get<std::string>(), d);
   } catch (const UnitError& e) {
@@ -208,13 +220,13 @@ double JsonCursor::Quantity(Dimension d) const {
 
 double JsonCursor::PositiveQuantity(Dimension d) const {
   double x = Quantity(d);
-  if (!(x > 0)) Fail("must be greater than zero, got " + FormatNumber(x));
+  if (!(x > 0)) Fail("must be greater than zero, found " + AsTyped(*value_));
   return x;
 }
 
 double JsonCursor::NonNegativeQuantity(Dimension d) const {
   double x = Quantity(d);
-  if (x < 0) Fail("must not be negative, got " + FormatNumber(x));
+  if (x < 0) Fail("must not be negative, found " + AsTyped(*value_));
   return x;
 }
 

@@ -3,11 +3,13 @@
 // point or measured in a Kawabata file).
 #include "core/io/scene_parser.h"
 
+#include <cmath>
 #include <map>
 
 #include "core/io/kawabata_reader.h"
 #include "core/io/material_library.h"
 #include "core/model/scene_error.h"
+#include "core/model/string_format.h"
 
 namespace drape {
 namespace {
@@ -141,8 +143,11 @@ Material SceneParser::ReadMaterial(const JsonCursor& c) {
     o.nu12 = nu.Number();
     // Positive-definite plane stress needs ν12·ν21 < 1 with ν21 = ν12 E2/E1.
     if (o.nu12 < 0 || o.nu12 * o.nu12 * o.e2 / o.e1 >= 1)
-      nu.Fail("must lie in [0, sqrt(E1/E2)) for a stable orthotropic law, got " +
-              std::to_string(o.nu12));
+      nu.Fail(
+          Format("must lie in [0, %.4g) for a stable orthotropic law with these E1 and E2 "
+                 "(the bound is √(E1/E2)), found %s",
+                 std::sqrt(o.e1 / o.e2),
+                 nu.value().dump().c_str()));
     m.membrane = o;
   } else {
     IsotropicMembrane iso;
@@ -150,7 +155,10 @@ Material SceneParser::ReadMaterial(const JsonCursor& c) {
     auto nu = c["poisson_ratio"];
     iso.poisson_ratio = nu.Number();
     if (iso.poisson_ratio < 0 || iso.poisson_ratio >= 0.5)
-      nu.Fail("must lie in [0, 0.5), got " + std::to_string(iso.poisson_ratio));
+      nu.Fail(
+          "must lie in [0, 0.5) (an isotropic sheet with ν = 0.5 cannot change its area), "
+          "found " +
+          nu.value().dump());
     m.membrane = iso;
   }
   m.bending.warp = LinearBending{};
