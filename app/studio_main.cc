@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   QApplication::setApplicationName("Drape Studio");
   QApplication::setOrganizationName("Drape Studio");
+  QApplication::setApplicationVersion(DRAPE_VERSION);
 
   QCommandLineParser parser;
   parser.setApplicationDescription("Drape Studio: simulate, fold and drape fabric parts");

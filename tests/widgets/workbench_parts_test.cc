@@ -194,6 +194,7 @@ TEST_F(WorkbenchParts, TheTimelineShowsStepI) {
     step->step = i;
     step->stage_name = "R";
     step->lambda = i / 4.0;
+    step->negative_pivots = i == 2 ? 1 : 0;  // step 2 one a part could not rest in
     step->state = model.reference;
     step->state.positions.col(2).array() += 0.01 * i;
     step->state.obstacles.assign(view->scene().obstacles.size(), ObstaclePlacement{});
@@ -203,14 +204,16 @@ TEST_F(WorkbenchParts, TheTimelineShowsStepI) {
   EXPECT_EQ(view->timeline()->maximum(), 3);
   QTest::qWait(20);  // the view follows the newest step, once
   EXPECT_EQ(view->currentStep(), 3);
-  EXPECT_EQ(view->stepLabel()->text().toStdString(), "step 3 of 3 — stage R, λ = 0.7500");
+  EXPECT_EQ(view->stepLabel()->text().toStdString(),
+            "step 3 of 3 — R 75 % — stable rest state: yes");
 
   QSignalSpy shown(view, &ViewController::stepShown);
   view->timeline()->setValue(2);
   ASSERT_EQ(shown.count(), 1);
   EXPECT_EQ(shown.last().at(0).toInt(), 2);
   EXPECT_EQ(window_->currentStep(), 2);
-  EXPECT_EQ(view->stepLabel()->text().toStdString(), "step 2 of 3 — stage R, λ = 0.5000");
+  EXPECT_EQ(view->stepLabel()->text().toStdString(),
+            "step 2 of 3 — R 50 % — stable rest state: no");
   EXPECT_EQ(view->shownPositions(), view->step(2).state.positions);
   window_->showStep(0);
   EXPECT_EQ(view->stepLabel()->text().toStdString(), "reference state");

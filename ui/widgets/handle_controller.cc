@@ -6,8 +6,10 @@
 
 #include "core/fe/path_handles.h"
 #include "core/fe/prescribed_motion.h"
+#include "core/fe/shell_model.h"
 #include "core/model/obstacle_anchor.h"
 #include "ui/widgets/drag_handles.h"
+#include "ui/widgets/form_placement.h"
 #include "ui/widgets/live_drag.h"
 #include "ui/widgets/outline_handles.h"
 #include "ui/widgets/path_handles.h"
@@ -140,7 +142,12 @@ void HandleController::OnObstacleDragged() {
   const auto anchor = ObstacleAnchor(o);
   if (!anchor) return;
   o = Translated(o, obstacle_->position(0) - *anchor);
-  ApplyAfterDrag("move " + QString::fromStdString(o.name), after);
+  const QString what = "move " + QString::fromStdString(o.name);
+  // A fabric laid on the obstacle stays on it.
+  if (const auto& model = document_->model())
+    after = FollowingTheForm(
+        document_->scene(), after, model->mesh, obstacle_index_, document_->directory());
+  ApplyAfterDrag(what, after);
 }
 
 // The outline the handles make is the fabric's; the document remeshes it,

@@ -57,8 +57,13 @@ HoldsPanel::HoldsPanel(Role role, SceneDocument* document, QWidget* parent)
   auto* form = new QFormLayout;
   rule_ = new SelectionRuleEditor(form, "holds", this);
   fixity_ = new QComboBox(this);
-  fixity_->addItems({"position (pinned)", "clamp (position and director)"});
-  form->addRow("fixity", fixity_);
+  fixity_->addItems(
+      {"pinned (held in place, free to turn)", "clamped (held and kept from turning)"});
+  fixity_->setToolTip(
+      "pinned: the nodes keep their place (fix: position); clamped: they keep their place and "
+      "the fabric's direction there, as between the jaws of a clamp (fix: clamp, the director "
+      "held)");
+  form->addRow("holds by", fixity_);
   layout->addLayout(form);
   auto* buttons = new QHBoxLayout;
   auto* add = new QPushButton("Add " + noun, this);

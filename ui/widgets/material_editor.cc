@@ -3,10 +3,13 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
+#include <QStringList>
 
 #include <cmath>
 #include <initializer_list>
 
+#include "core/fe/fabric_plausibility.h"
 #include "ui/widgets/edit_feedback.h"
 #include "ui/widgets/quantity_field.h"
 #include "ui/widgets/scene_document.h"
@@ -66,6 +69,12 @@ void MaterialEditor::MakeFields() {
   nu12_ = new QuantityField(dim::kNone, "0.2", NonNegative, this);
   g12_ = new QuantityField(dim::kPressure, "5000 gf/cm^2", Positive, this);
   message_ = MakeMessageLabel(this);
+  warnings_ = new QLabel(this);
+  warnings_->setWordWrap(true);
+  warnings_->setStyleSheet("color: #b35900");
+  warnings_->setToolTip(
+      "Values no fabric has: most often a unit that slipped (a bare number is read in SI "
+      "units: metres, N/m²). The scene still runs as it is.");
 }
 
 void MaterialEditor::LayOut() {
@@ -81,6 +90,7 @@ void MaterialEditor::LayOut() {
   form_->addRow("G₁₂", g12_);
   form_->addRow("warp angle", angle_);
   form_->addRow(message_);
+  form_->addRow(warnings_);
 }
 
 void MaterialEditor::EditBy(QuantityField* field,
@@ -120,6 +130,35 @@ void MaterialEditor::ConnectFields() {
 
 QString MaterialEditor::message() const {
   return message_->text();
+}
+
+QString MaterialEditor::warnings() const {
+  return warnings_->text();
+}
+
+// Each in the field's name beside the scene key; a bare number typed into
+// the field is said as read ("0.5 read as 0.5 m").
+void MaterialEditor::ShowWarnings(const Material& material) {
+  QStringList lines;
+  for (const Implausible& value : ImplausibleFabric(material)) {
+    QString read_as = QString::fromStdString(value.read_as);
+    const QuantityField* field = value.key == "material.thickness"      ? thickness_
+                                 : value.key == "material.areal_weight" ? weight_
+                                                                        : nullptr;
+    bool bare = false;
+    if (field) field->edit()->text().trimmed().toDouble(&bare);
+    if (bare) read_as = field->edit()->text().trimmed() + " read as " + read_as;
+    QString line = QString("%1 (%2): %3, %4")
+                       .arg(QString::fromStdString(value.quantity),
+                            QString::fromStdString(value.key),
+                            read_as,
+                            QString::fromStdString(value.why));
+    if (!value.did_you_mean.empty())
+      line += QString("; did you mean %1?").arg(QString::fromStdString(value.did_you_mean));
+    lines << line;
+  }
+  warnings_->setText(lines.join("\n"));
+  warnings_->setVisible(!lines.isEmpty());
 }
 
 bool MaterialEditor::setOrthotropic(bool on) {
@@ -169,6 +208,7 @@ void MaterialEditor::refresh() {
     g12_->setValue(orthotropic->g12, units_);
   }
   angle_->setValue(material.angle_deg * M_PI / 180, QString("%1 deg").arg(material.angle_deg));
+  ShowWarnings(material);
   angle_->setToolTip(material.angle_from_grain
                          ? "from the pattern piece's grain line; type an angle to set another"
                          : "the warp's direction from the part's x axis; 45 deg is a bias cut");

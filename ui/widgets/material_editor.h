@@ -19,6 +19,7 @@ namespace drape {
 
 class QuantityField;
 class SceneDocument;
+struct Material;
 struct Scene;
 
 class MaterialEditor : public QGroupBox {
@@ -39,6 +40,11 @@ class MaterialEditor : public QGroupBox {
   // The message line under the group: why the last edit was refused.
   QLabel* messageLabel() const { return message_; }
   QString message() const;
+  // Values no fabric has (core/fe/fabric_plausibility.h), one per line, each
+  // with the field's name, the scene key and the likely slip: "thickness
+  // (material.thickness): 0.5 read as 0.5 m, thicker than any fabric
+  // (0.05–5 mm); did you mean 0.5 mm?". Empty when all are plausible.
+  QString warnings() const;
 
   // Isotropic ↔ orthotropic, keeping the material's stiffness (E₁ = E₂ = E,
   // ν₁₂ = ν, G₁₂ = E/2(1 + ν); back: E = E₁, ν = ν₁₂).
@@ -52,6 +58,7 @@ class MaterialEditor : public QGroupBox {
   void MakeFields();
   void LayOut();
   void ConnectFields();
+  void ShowWarnings(const Material& material);
   // Commits of `field` change the scene by `change` (with the SI value),
   // as an edit named `what` and the typed text.
   void EditBy(QuantityField* field,
@@ -64,6 +71,7 @@ class MaterialEditor : public QGroupBox {
   QuantityField *e1_, *e2_, *nu12_, *g12_;
   QComboBox* membrane_;
   QLabel* message_;
+  QLabel* warnings_;
   UnitSystem units_ = UnitSystem::kSI;
   bool refreshing_ = false;
 };

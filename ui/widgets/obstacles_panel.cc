@@ -13,10 +13,14 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <exception>
 
+#include "core/fe/shell_model.h"
 #include "core/io/scene_writer.h"
 #include "core/model/scene.h"
 #include "ui/widgets/edit_feedback.h"
+#include "ui/widgets/form_editor.h"
+#include "ui/widgets/form_placement.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/scene_part_watch.h"
 #include "ui/widgets/typed_json.h"
@@ -42,12 +46,25 @@ ObstaclesPanel::ObstaclesPanel(SceneDocument* document, QWidget* parent)
   auto* row = new QHBoxLayout;
   kind_ = new QComboBox(this);
   kind_->addItems({"table", "block", "rod", "sphere"});
+  try {
+    for (const FormChoice& form : FormCatalogue()) {
+      kind_->addItem(form.name, form.file);
+      kind_->setItemData(kind_->count() - 1, form.measurements, Qt::ToolTipRole);
+    }
+  } catch (const std::exception&) {
+    // Without the catalogue the shapes are still offered.
+  }
+  kind_->setToolTip(
+      "What to add: a shape placed under the part, or a form stood under it with "
+      "the fabric laid on top");
   auto* add = new QPushButton("Add", this);
   auto* remove = new QPushButton("Remove", this);
   row->addWidget(kind_, 1);
   row->addWidget(add);
   row->addWidget(remove);
   layout->addLayout(row);
+  form_ = new FormEditor(document_, this);
+  layout->addWidget(form_);
   text_label_ = new QLabel(this);
   layout->addWidget(text_label_);
   text_ = new QPlainTextEdit(this);
@@ -115,9 +132,33 @@ bool ObstaclesPanel::Apply(const QString& what, const Scene& after) {
 }
 
 bool ObstaclesPanel::add(const QString& kind) {
+  const int form = kind_->findText(kind);
+  if (form >= 0 && !kind_->itemData(form).isNull()) return AddForm(form);
   Scene after = document_->scene();
   after.obstacles.push_back({FreeName(kind.toStdString(), after.obstacles), DefaultShape(kind)});
   if (!Apply("add a " + kind, after)) return false;
+  list_->setCurrentRow(list_->count() - 1);
+  return true;
+}
+
+// A form stands on the floor under the fabric's middle and the fabric is
+// laid on it: one edit.
+bool ObstaclesPanel::AddForm(int item) {
+  const auto& model = document_->model();
+  if (!model) return false;
+  const FormChoice form{kind_->itemText(item), kind_->itemData(item).toString(), {}};
+  Scene after = WithForm(document_->scene(), model->mesh, form);
+  QString why;
+  const auto above = FabricAbove(after,
+                                 model->mesh,
+                                 static_cast<int>(after.obstacles.size()) - 1,
+                                 document_->directory(),
+                                 &why);
+  if (!above) {
+    message_->setText(why);
+    return false;
+  }
+  if (!Apply("add " + form.name + ", the fabric laid on it", *above)) return false;
   list_->setCurrentRow(list_->count() - 1);
   return true;
 }
@@ -217,11 +258,13 @@ void ObstaclesPanel::refresh() {
   }
   ShowText();
   ShowContact();
+  form_->setObstacle(list_->currentRow());
   emit obstacleSelected(list_->currentRow());
 }
 
 void ObstaclesPanel::setUnitSystem(UnitSystem system) {
   units_ = system;
+  form_->setUnitSystem(system);
   ShowText();
   ShowContact();
 }

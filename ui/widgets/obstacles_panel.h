@@ -1,4 +1,5 @@
-// The rigid obstacles of a scene: add a table, block, rod or sphere, edit
+// The rigid obstacles of a scene: add a table, block, rod, sphere or a form
+// (the fabric laid on it; FormEditor places it by hand), edit
 // one as the scene file writes it (JSON, units allowed: "5 cm"), remove
 // one; and the contact's law (penalty or barrier), its penalty or barrier
 // distance, and friction. The text is read by the scene reader, so a wrong key
@@ -21,6 +22,7 @@ class QPlainTextEdit;
 
 namespace drape {
 
+class FormEditor;
 class SceneDocument;
 struct Scene;
 
@@ -33,8 +35,12 @@ class ObstaclesPanel : public QWidget {
   QPlainTextEdit* text() const { return text_; }
   QString message() const;
 
-  // kind: "table", "block", "rod" or "sphere", placed under the part.
+  // kind: "table", "block", "rod" or "sphere", placed under the part, or a
+  // form of the catalogue by its name ("Dress form, medium"), stood on the
+  // floor under the fabric's middle with the fabric laid on it.
   bool add(const QString& kind);
+  // The selected form's placement (shown when the obstacle is a mesh).
+  FormEditor* form() const { return form_; }
   bool removeSelected();
   // The selected obstacle from its JSON text.
   bool applyText(const QString& json);
@@ -63,12 +69,14 @@ class ObstaclesPanel : public QWidget {
 
  private:
   bool Apply(const QString& what, const Scene& after);
+  bool AddForm(int item);
   void ShowContact();
   void ShowText();
 
   SceneDocument* document_;
   QListWidget* list_;
   QComboBox* kind_;
+  FormEditor* form_;
   QPlainTextEdit* text_;
   bool ApplyContact(const QString& what, nlohmann::json document);
 

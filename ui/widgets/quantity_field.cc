@@ -1,5 +1,7 @@
 #include "ui/widgets/quantity_field.h"
 
+#include <cmath>
+
 #include <QLabel>
 #include <QLineEdit>
 #include <QVBoxLayout>
@@ -63,9 +65,16 @@ void QuantityField::Commit() {
   if (text == text_) return;
   QString problem;
   double si = 0;
+  bool bare = false;
+  const double number = text.toDouble(&bare);
   try {
-    si = measure_ ? ParseMeasure(text.toStdString(), *measure_)
-                  : ParseQuantityAs(text.toStdString(), dimension_);
+    // A bare number is SI, as the scene reader reads a JSON number (the
+    // editors warn of values no fabric has: "0.5 read as 0.5 m"); an angle
+    // in degrees, as under the reader's `_deg` keys.
+    const bool angle = dimension_ == dim::kAngle;
+    si = bare && std::isfinite(number) ? (angle ? number * M_PI / 180.0 : number)
+         : measure_                    ? ParseMeasure(text.toStdString(), *measure_)
+                                       : ParseQuantityAs(text.toStdString(), dimension_);
     problem = check_ ? check_(si) : QString();
   } catch (const UnitError& e) {
     problem = QString::fromStdString(e.what());

@@ -18,7 +18,8 @@ class QLineEdit;
 namespace drape {
 
 // A quantity typed with its unit ("0.5 mm"), accepted when it has the
-// field's dimension and passes `check` (which returns "" or what is wrong).
+// field's dimension and passes `check` (which returns "" or what is wrong);
+// a bare number is in SI units, as in a scene file.
 // Any unit the scene reader takes for the measure is accepted; values the
 // user did not type are shown in the field's unit system.
 class QuantityField : public QWidget {

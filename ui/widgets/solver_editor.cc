@@ -48,15 +48,23 @@ void SolverEditor::MakePreset(QFormLayout* form) {
       this);
   target_iterations_ = new QSpinBox(this);
   target_iterations_->setRange(1, 50);
-  form->addRow("tolerance ‖R‖/‖R₀‖", tolerance_);
-  form->addRow("target iterations N_p", target_iterations_);
+  tolerance_->setToolTip(
+      "How closely each step's forces must balance: the out-of-balance force over the first "
+      "one, ‖R‖/‖R₀‖ (solver.tolerance). Smaller: more accurate, slower");
+  target_iterations_->setToolTip(
+      "The step length adapts so that a step takes about this many Newton iterations "
+      "(N_p, solver.target_iterations). More: longer steps, fewer of them; fewer: shorter "
+      "steps that follow a sharp fold more closely");
+  form->addRow("equilibrium tolerance", tolerance_);
+  form->addRow("iterations per step", target_iterations_);
 }
 
 void SolverEditor::MakeLimits(QFormLayout* form) {
   max_steps_ = new QSpinBox(this);
   max_steps_->setRange(1, 1000000);
   max_steps_->setSingleStep(100);
-  form->addRow("max steps", max_steps_);
+  max_steps_->setToolTip("The run stops (keeping its steps) after this many (solver.max_steps)");
+  form->addRow("at most, steps", max_steps_);
   time_limit_ = new QDoubleSpinBox(this);
   time_limit_->setRange(0, 1e7);
   time_limit_->setDecimals(1);
@@ -105,7 +113,7 @@ void SolverEditor::MakeChoices(QFormLayout* form) {
       "Newton iterations (the result then has one step). Must divide the mesh's element counts. "
       "auto: on for one-stage drapes of 2500 elements or more, with the coarse mesh about 20 "
       "elements across; off: the path on this mesh");
-  form->addRow("coarse path, factor", sequencing_);
+  form->addRow("solve first on a coarser mesh", sequencing_);
   branching_ = new QComboBox(this);
   branching_->addItem("take the stable branch, or snap", "stable");
   branching_->addItem("follow the primary path", "fundamental");

@@ -46,8 +46,15 @@ StagesPanel::StagesPanel(SceneDocument* document, QWidget* parent)
   increment_->setSingleStep(0.001);
   control_ = new QComboBox(this);
   control_->addItems({"arc length (passes limit points)", "load (plain Newton)"});
-  form->addRow("initial increment Δλ₀", increment_);
-  form->addRow("control", control_);
+  increment_->setToolTip(
+      "The first step's share of the stage (Δλ₀, initial_increment): 0.01 is 1 % of the "
+      "stage's load or motion; later steps grow or shrink as the part allows");
+  control_->setToolTip(
+      "How steps are measured (control): along the path of the part's shape and the load "
+      "together (arc length), which follows a part past where it gives way; or by the load "
+      "alone (plain Newton), which stops there");
+  form->addRow("first step", increment_);
+  form->addRow("step by", control_);
   release_ = new QLineEdit(this);
   release_->setPlaceholderText("gripper names, comma separated");
   form->addRow("releases", release_);

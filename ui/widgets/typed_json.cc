@@ -80,7 +80,7 @@ nlohmann::json ObstacleInUnits(const nlohmann::json& obstacle, UnitSystem system
   for (auto& [key, shape] : shown.items()) {
     if (!shape.is_object()) continue;  // the name
     for (const char* length :
-         {"point", "min", "max", "center", "radius", "length", "edge_radius"}) {
+         {"point", "min", "max", "center", "radius", "length", "edge_radius", "at"}) {
       if (!shape.contains(length)) continue;
       nlohmann::json& value = shape[length];
       if (value.is_array())

@@ -37,7 +37,7 @@ QString ListText(const std::array<double, 3>& v, Measure measure, UnitSystem sys
 QString QuantityText(double si, Measure measure, UnitSystem system);
 
 // An obstacle as SceneToJson writes it (SI numbers) with its lengths
-// (point, min, max, center, radius, length, edge_radius) as quantities in
+// (point, min, max, center, radius, length, edge_radius, a mesh's at) as quantities in
 // `system`'s unit, ["10 cm", 0, "2 cm"]; unchanged in SI. The scene reader
 // reads it back to the same obstacle.
 nlohmann::json ObstacleInUnits(const nlohmann::json& obstacle, UnitSystem system);
