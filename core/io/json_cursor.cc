@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/io/scene_parser.h"
 #include "core/model/scene_error.h"
 
 namespace drape {
@@ -39,21 +40,6 @@ std::string QuoteList(std::initializer_list<std::string_view> words) {
   return out;
 }
 
-// A value as the user wrote it in the file: a string in double quotes, a
-// number as JSON writes it (shortest form), true, false, null; an object or
-// array by its kind only.
-std::string AsTyped(const nlohmann::json& v) {
-  if (v.is_string() || v.is_number() || v.is_boolean() || v.is_null()) return v.dump();
-  return TypeName(v);
-}
-
-// "a string "5 cm"", "the number 80.5": what was found, with its value.
-std::string FoundValue(const nlohmann::json& v) {
-  if (v.is_string()) return "a string " + v.dump();
-  if (v.is_number()) return "the number " + v.dump();
-  return TypeName(v);
-}
-
 // "a length", "an angle", "a force/area".
 std::string WithArticle(const std::string& noun) {
   const bool vowel = !noun.empty() && std::string("aeiou").find(noun[0]) != std::string::npos;
@@ -61,6 +47,28 @@ std::string WithArticle(const std::string& noun) {
 }
 
 }  // namespace
+
+// AsTyped, FoundValue and IsWord: see scene_parser.h.
+std::string AsTyped(const nlohmann::json& v) {
+  if (v.is_string() || v.is_number() || v.is_boolean() || v.is_null()) return v.dump();
+  return TypeName(v);
+}
+
+std::string FoundValue(const nlohmann::json& v) {
+  if (v.is_string()) return "a string " + v.dump();
+  if (v.is_number()) return "the number " + v.dump();
+  if (v.is_boolean() || v.is_null()) return v.dump();
+  return TypeName(v);
+}
+
+bool IsWord(const nlohmann::json& v) {
+  if (!v.is_string()) return false;
+  const std::string& s = v.get_ref<const std::string&>();
+  const auto first = s.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return false;
+  const char c = s[first];
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
 
 std::string Quoted(std::string_view word) {
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "'" + s + "'".
@@ -187,12 +195,17 @@ int JsonCursor::Integer() const {
   if (value_->is_number_unsigned()) {
     auto u = value_->get<std::uint64_t>();
     if (u > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-      Fail("integer " + std::to_string(u) + " is too large");
+      Fail("integer " + std::to_string(u) + " is too large (at most " +
+           std::to_string(std::numeric_limits<int>::max()) + ")");
     return static_cast<int>(u);
   }
   auto i = value_->get<std::int64_t>();
-  if (i > std::numeric_limits<int>::max() || i < std::numeric_limits<int>::min())
-    Fail("integer " + std::to_string(i) + (i < 0 ? " is too small" : " is too large"));
+  if (i > std::numeric_limits<int>::max())
+    Fail("integer " + std::to_string(i) + " is too large (at most " +
+         std::to_string(std::numeric_limits<int>::max()) + ")");
+  if (i < std::numeric_limits<int>::min())
+    Fail("integer " + std::to_string(i) + " is too small (at least " +
+         std::to_string(std::numeric_limits<int>::min()) + ")");
   return static_cast<int>(i);
 }
 

@@ -14,6 +14,16 @@
 
 namespace drape {
 
+// What the reader's messages show of a value (defined in json_cursor.cc):
+// AsTyped, the value as the user wrote it ("5 cm" in its double quotes, 80.5,
+// true, null; an array or object by its kind only); FoundValue, the same after
+// "found" (a string "5 cm", the number 80.5, true, an array).
+std::string AsTyped(const nlohmann::json& v);
+std::string FoundValue(const nlohmann::json& v);
+// A string that starts with a letter: a word (a keyword mistyped, "atuo"),
+// not a quantity.
+bool IsWord(const nlohmann::json& v);
+
 // Reads one scene document. Each Read* function takes the cursor of its JSON
 // value and returns plain data; cross-references are checked at the end.
 class SceneParser {

@@ -56,6 +56,11 @@ std::string SceneParser::ReadFileReference(const JsonCursor& c) {
 double SceneParser::ReadAngleDeg(const JsonCursor& c) {
   // A bare number under a `_deg` key is in degrees; "3.14159 rad" is converted.
   if (c.value().is_number()) return c.Number();
+  if (!c.value().is_string())
+    c.Fail(
+        "expected an angle (a number of degrees, or a \"number unit\" string such as "
+        "\"0.5 rad\"), found " +
+        FoundValue(c.value()));
   return c.Quantity(dim::kAngle) * 180.0 / M_PI;
 }
 
@@ -108,8 +113,15 @@ Scene SceneParser::Read(const JsonCursor& root) {
     CheckSequencing(SceneOnSolvedMesh(scene), scene.solver.sequencing);
   } catch (const SceneError& e) {
     if (scene.solver.mesh_scale == 1) throw;
-    char scale[32];
-    std::snprintf(scale, sizeof scale, "%g", scene.solver.mesh_scale);
+    // The scale as typed; from a preset, as the preset gives it.
+    std::string scale;
+    if (auto solver = root.Find("solver"); solver && solver->Has("mesh_scale")) {
+      scale = AsTyped((*solver)["mesh_scale"].value());
+    } else {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%g", scene.solver.mesh_scale);
+      scale = buffer;
+    }
     throw SceneError(
         e.where(),
         e.message() + " (the mesh solved: fabric.mesh at solver.mesh_scale " + scale + ")");

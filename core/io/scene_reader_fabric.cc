@@ -30,7 +30,8 @@ std::optional<std::string> SceneParser::ReadPartName(const JsonCursor& c) const 
     if (!f->name.empty() && f->name == name) return name;
     names += (names.empty() ? "'" : ", '") + f->name + "'";
   }
-  if (parts_.size() < 2) part->Fail("names a part of a fabric with several; this fabric has one");
+  if (parts_.size() < 2)
+    part->Fail(Quoted(name) + " names a part, but this fabric is one part: leave out 'part'");
   part->Fail("no fabric part is named '" + name + "'; the parts are " + names);
 }
 
@@ -108,15 +109,22 @@ MeshSpec SceneParser::ReadMeshSpec(const JsonCursor& c, const Outline& outline) 
   MeshSpec spec;
   if (c.OneOf({"elements", "size"}) == 0) {
     auto e = c["elements"];
-    if (!std::holds_alternative<RectangleOutline>(outline))
-      e.Fail("element counts are for rectangle outlines; give 'size' (a target element edge)");
+    if (!std::holds_alternative<RectangleOutline>(outline)) {
+      const char* kind = std::holds_alternative<DiskOutline>(outline)      ? "a disk"
+                         : std::holds_alternative<PolygonOutline>(outline) ? "a polygon"
+                                                                           : "a pattern piece";
+      e.Fail(std::string("element counts are for rectangle outlines; this outline is ") + kind +
+             ": give 'size' (a target element edge)");
+    }
     auto items = e.Items(2);
     std::array<int, 2> n{items[0].Integer(), items[1].Integer()};
     for (int k = 0; k < 2; ++k)
-      if (n[k] < 1) items[k].Fail("must be at least 1, got " + std::to_string(n[k]));
-    if (static_cast<double>(n[0]) * n[1] > 4e6)
-      e.Fail("more than 4 million elements (" + std::to_string(n[0]) + " x " +
-             std::to_string(n[1]) + ")");
+      if (n[k] < 1) items[k].Fail("must be at least 1, found " + std::to_string(n[k]));
+    constexpr long long kMaxElements = 4'000'000;
+    const long long total = static_cast<long long>(n[0]) * n[1];
+    if (total > kMaxElements)
+      e.Fail(std::to_string(n[0]) + " x " + std::to_string(n[1]) + " = " + std::to_string(total) +
+             " elements, more than the " + std::to_string(kMaxElements) + " allowed");
     spec.elements = n;
   } else {
     spec.size = c["size"].PositiveQuantity(dim::kLength);
@@ -130,7 +138,9 @@ ImperfectionSpec SceneParser::ReadImperfection(const JsonCursor& c) {
   spec.amplitude = c["amplitude"].NonNegativeQuantity(dim::kLength);
   if (auto s = c.Find("seed")) {
     // nlohmann stores every non-negative integer literal as unsigned.
-    if (!s->value().is_number_unsigned()) s->Fail("expected a non-negative integer");
+    if (!s->value().is_number_unsigned())
+      s->Fail("expected a non-negative integer, found " +
+              (s->value().is_number() ? s->value().dump() : FoundValue(s->value())));
     spec.seed = s->value().get<std::uint64_t>();
   }
   if (auto p = c.Find("pattern"))

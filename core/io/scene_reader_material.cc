@@ -167,6 +167,11 @@ Material SceneParser::ReadMaterial(const JsonCursor& c) {
     if (a->value().is_string() && a->String() == "grain") {
       m.angle_deg = GrainAngle(*a);
       m.angle_from_grain = true;
+    } else if (IsWord(a->value()) || !(a->value().is_string() || a->value().is_number())) {
+      a->Fail(
+          "expected \"grain\" or an angle (a number of degrees, or a \"number unit\" string "
+          "such as \"0.5 rad\"), found " +
+          AsTyped(a->value()));
     } else {
       m.angle_deg = ReadAngleDeg(*a);
     }
@@ -189,9 +194,13 @@ double SceneParser::GrainAngle(const JsonCursor& c) const {
       c.Fail("piece '" + pattern->piece + "' of " + pattern->file + " has no grain line (layer 7)");
     const double a = GrainAngleDeg(pattern->shape);
     if (angle && std::abs(std::remainder(a - *angle, 360.0)) > 1e-9)
-      c.Fail("the parts' grain lines differ ('" + first + "' " + std::to_string(*angle) +
-             " deg, '" + part->name + "' " + std::to_string(a) +
-             " deg) and the parts share one material: give angle_deg");
+      c.Fail(
+          Format("the parts' grain lines differ ('%s' %g deg, '%s' %g deg) and the parts "
+                 "share one material: give angle_deg",
+                 first.c_str(),
+                 *angle,
+                 part->name.c_str(),
+                 a));
     if (!angle) first = part->name;
     angle = a;
   }
@@ -213,14 +222,14 @@ Bending SceneParser::ReadBending(const JsonCursor& c) {
 namespace {
 
 // The SI factor of the unit named at `key` (SI when absent), which must be
-// of dimension `d`.
-double UnitFactorAt(const JsonCursor& c, const char* key, Dimension d) {
+// of dimension `d`; `expected` says what such a unit is, for the message.
+double UnitFactorAt(const JsonCursor& c, const char* key, Dimension d, const char* expected) {
   auto u = c.Find(key);
   if (!u) return 1.0;  // SI
   try {
     Unit unit = ParseUnit(u->String());
     if (!(unit.dimension == d))
-      u->Fail(Quoted(u->String()) + " is not a unit of " + DimensionName(d));
+      u->Fail(std::string("expected ") + expected + ", found " + u->value().dump());
     return unit.si_factor;
   } catch (const UnitError& e) {
     u->Fail(e.what());
@@ -242,7 +251,9 @@ PolynomialBending ReadPolynomialBending(const JsonCursor& c,
   }
   if (law.coefficients.empty()) coefficients.Fail("needs at least one coefficient");
   if (!(law.coefficients[0] > 0))
-    coefficients.Fail("the linear coefficient c1 (the initial bending rigidity) must be positive");
+    coefficients.Fail(
+        "the linear coefficient c1 (the initial bending rigidity) must be positive, found " +
+        coefficients.Items()[0].value().dump());
   law.valid_to = c["valid_to"].PositiveQuantity(dim::kCurvature);
   return law;
 }
@@ -262,8 +273,11 @@ void ReadCurvePoints(const JsonCursor& c,
   if (law.points.size() < 2)
     points.Fail("a curve needs at least 2 points, found " + std::to_string(law.points.size()));
   for (size_t i = 1; i < law.points.size(); ++i)
-    if (!(law.points[i][0] > law.points[i - 1][0]))
-      points.Items()[i].Fail("curvatures must increase from point to point");
+    if (!(law.points[i][0] > law.points[i - 1][0])) {
+      const auto items = points.Items();
+      items[i].Fail("curvatures must increase from point to point, found " +
+                    items[i].value()[0].dump() + " after " + items[i - 1].value()[0].dump());
+    }
 }
 
 }  // namespace
@@ -298,7 +312,8 @@ std::optional<double> SceneParser::ReadKawabataPoints(const JsonCursor& c, Curve
 }
 
 BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c, Hysteresis& hysteresis) {
-  if (!c.value().is_object()) c.Fail("expected an object with a 'model'");
+  if (!c.value().is_object())
+    c.Fail("expected an object with a 'model', found " + FoundValue(c.value()));
   int model = c["model"].Choice({"linear", "polynomial", "curve"});
   if (model == 0) {
     c.ExpectObject({"model", "rigidity", "hysteresis"});
@@ -307,8 +322,12 @@ BendingLaw SceneParser::ReadBendingLaw(const JsonCursor& c, Hysteresis& hysteres
     hysteresis = ReadHysteresis(c, 1.0, std::nullopt);
     return law;
   }
-  const double moment_unit = UnitFactorAt(c, "moment_unit", dim::kMomentPerWidth);
-  const double curvature_unit = UnitFactorAt(c, "curvature_unit", dim::kCurvature);
+  const double moment_unit = UnitFactorAt(c,
+                                          "moment_unit",
+                                          dim::kMomentPerWidth,
+                                          "a unit of moment per width, such as gf*cm/cm or N*m/m");
+  const double curvature_unit = UnitFactorAt(
+      c, "curvature_unit", dim::kCurvature, "a unit of curvature, such as 1/cm or 1/m");
   if (model == 1) {
     PolynomialBending law = ReadPolynomialBending(c, moment_unit, curvature_unit);
     hysteresis = ReadHysteresis(c, moment_unit, std::nullopt);
@@ -348,11 +367,17 @@ Hysteresis SceneParser::ReadHysteresis(const JsonCursor& law,
           "branches do not both reach |K| = 1 1/cm");
     return {*loop_width, true};
   }
+  if (IsWord(h->value()) || !(h->value().is_string() || h->value().is_number()))
+    h->Fail(
+        "expected \"measured\" or 2HB, a moment per width (a number in the law's moment_unit, "
+        "or a \"number unit\" string such as \"0.1 gf*cm/cm\"), found " +
+        AsTyped(h->value()));
   // 2HB, the loop's width; a bare number is in the law's moment_unit.
   hysteresis.width =
       h->value().is_number() ? h->Number() * moment_unit : h->Quantity(dim::kMomentPerWidth);
   if (!(hysteresis.width >= 0))
-    h->Fail("2HB, the width of the moment-curvature loop, must not be negative");
+    h->Fail("2HB, the width of the moment-curvature loop, must not be negative, found " +
+            AsTyped(h->value()));
   return hysteresis;
 }
 

@@ -27,13 +27,38 @@ Vec3 ReadMeshScale(const JsonCursor& c) {
     const double f = factors[k].Number();
     if (!(f >= 1e-6 && f <= 1e6))
       factors[k].Fail(
-          Format("a scale factor must be between 1e-6 and 1e6 (a positive number; "
-                 "a negative one would turn the mesh inside out), found %g",
-                 f));
+          "a scale factor must be between 1e-6 and 1e6 (a positive number; a negative one "
+          "would turn the mesh inside out), found " +
+          factors[k].value().dump());
     scale[k] = f;
   }
   if (factors.size() == 1) scale = {scale[0], scale[0], scale[0]};
   return scale;
+}
+
+// `si` metres in the unit `typed` was written in ("2 cm" beside "3 cm"); in
+// metres when `typed` is a bare number.
+std::string LengthInUnitOf(double si, const nlohmann::json& typed) {
+  if (typed.is_string()) {
+    const std::string& text = typed.get_ref<const std::string&>();
+    const auto begin = text.find_first_not_of(" \t\r\n");
+    const auto unit_begin =
+        begin == std::string::npos ? begin : text.find_first_not_of("0123456789.eE+-", begin);
+    if (unit_begin != std::string::npos) {
+      const std::string unit_text = text.substr(unit_begin);
+      const auto first = unit_text.find_first_not_of(" \t\r\n");
+      const auto last = unit_text.find_last_not_of(" \t\r\n");
+      try {
+        const Unit unit = ParseUnit(unit_text);
+        if (unit.dimension == dim::kLength && first != std::string::npos)
+          return Format(
+              "%g %s", si / unit.si_factor, unit_text.substr(first, last - first + 1).c_str());
+      } catch (const UnitError&) {
+        // Cannot happen for a value already read as a length; fall back to metres.
+      }
+    }
+  }
+  return Format("%g m", si);
 }
 
 }  // namespace
@@ -55,16 +80,19 @@ Obstacle SceneParser::ReadObstacle(const JsonCursor& c) {
       BoxShape box{b["min"].QuantityVec3(dim::kLength), b["max"].QuantityVec3(dim::kLength), 0};
       double smallest = 1e300;
       for (int k = 0; k < 3; ++k) {
-        if (!(box.max[k] > box.min[k]))
-          b["max"].Fail(
-              "each coordinate of 'max' must exceed that of 'min' (a box of zero or "
-              "negative size)");
+        if (!(box.max[k] > box.min[k])) {
+          const std::string index = "[" + std::to_string(k) + "]";
+          b["max"].Fail("each coordinate of 'max' must exceed that of 'min', found max" + index +
+                        " = " + b["max"].value()[k].dump() + " and min" + index + " = " +
+                        b["min"].value()[k].dump());
+        }
         smallest = std::min(smallest, box.max[k] - box.min[k]);
       }
       if (auto r = b.Find("edge_radius")) {
         box.edge_radius = r->NonNegativeQuantity(dim::kLength);
         if (box.edge_radius >= 0.5 * smallest)
-          r->Fail("must be smaller than half the box's smallest side");
+          r->Fail("must be smaller than half the box's smallest side (" +
+                  LengthInUnitOf(0.5 * smallest, r->value()) + "), found " + AsTyped(r->value()));
       }
       o.shape = box;
       break;
@@ -116,13 +144,17 @@ Contact SceneParser::ReadContact(const JsonCursor& c) {
           "(its distance is contact.barrier_distance)");
     if (p->value().is_string() && p->value().get<std::string>() == "auto")
       contact.penalty = std::nullopt;
+    else if (IsWord(p->value()) || !(p->value().is_string() || p->value().is_number()))
+      p->Fail("expected \"auto\" or a " + DimensionName(dim::kPenaltyPerArea) + ", found " +
+              AsTyped(p->value()));
     else
       contact.penalty = p->PositiveQuantity(dim::kPenaltyPerArea);
   }
   if (auto f = c.Find("friction")) {
     contact.friction = f->Number();
     if (!std::isfinite(contact.friction)) f->Fail("a friction coefficient must be a finite number");
-    if (contact.friction < 0) f->Fail("a friction coefficient must not be negative");
+    if (contact.friction < 0)
+      f->Fail("a friction coefficient must not be negative, found " + f->value().dump());
   }
   if (auto d = c.Find("barrier_distance")) {
     if (contact.law != ContactLaw::kBarrier)

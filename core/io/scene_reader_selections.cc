@@ -3,6 +3,19 @@
 #include "core/io/scene_parser.h"
 
 namespace drape {
+namespace {
+
+// A point as typed: [0, "1 cm"].
+std::string PointAsTyped(const JsonCursor& c) {
+  std::string out = "[";
+  for (const auto& item : c.Items()) {
+    if (out.size() > 1) out += ", ";
+    out += AsTyped(item.value());
+  }
+  return out + "]";
+}
+
+}  // namespace
 
 Selection SceneParser::ReadSelection(const JsonCursor& c) {
   c.ExpectObject({"point",
@@ -34,7 +47,9 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
     case 1: {
       auto ends = c["line"].Items(2);
       LineSelection line{ends[0].QuantityVec2(dim::kLength), ends[1].QuantityVec2(dim::kLength)};
-      if (line.from == line.to) c["line"].Fail("the two ends of a line must differ");
+      if (line.from == line.to)
+        c["line"].Fail("the two ends of a line must differ, found " + PointAsTyped(ends[0]) +
+                       " and " + PointAsTyped(ends[1]));
       s.shape = line;
       break;
     }
@@ -42,8 +57,14 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
       auto corners = c["box"].Items(2);
       BoxSelection box{corners[0].QuantityVec2(dim::kLength),
                        corners[1].QuantityVec2(dim::kLength)};
-      if (box.min[0] > box.max[0] || box.min[1] > box.max[1])
-        c["box"].Fail("expected [[xmin, ymin], [xmax, ymax]] with min <= max");
+      for (int k = 0; k < 2; ++k)
+        if (box.min[k] > box.max[k]) {
+          const char* axis = k == 0 ? "x" : "y";
+          c["box"].Fail(
+              std::string("expected [[xmin, ymin], [xmax, ymax]] with min <= max, found ") + axis +
+              "min " + AsTyped(corners[0].value()[k]) + " > " + axis + "max " +
+              AsTyped(corners[1].value()[k]));
+        }
       s.shape = box;
       break;
     }
@@ -72,7 +93,9 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
                                                 : PatternMark::kInternalLine;
       auto k = c[key];
       PatternMarkSelection mark{kind, k.Integer()};
-      if (mark.index < 1) k.Fail("counts from 1 (the first in the pattern file)");
+      if (mark.index < 1)
+        k.Fail("counts from 1 (the first in the pattern file), found " +
+               std::to_string(mark.index));
       s.shape = mark;
       break;
     }
@@ -81,7 +104,7 @@ Selection SceneParser::ReadSelection(const JsonCursor& c) {
       NodesSelection n;
       for (const auto& item : nodes.Items()) {
         int index = item.Integer();
-        if (index < 0) item.Fail("node indices start at 0");
+        if (index < 0) item.Fail("node indices start at 0, found " + std::to_string(index));
         n.nodes.push_back(index);
       }
       if (n.nodes.empty()) nodes.Fail("an empty node list selects nothing");

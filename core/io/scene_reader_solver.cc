@@ -40,19 +40,19 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   if (auto m = c.Find("mesh_scale")) {
     s.mesh_scale = m->Number();
     if (!(s.mesh_scale >= 0.1 && s.mesh_scale <= 10))
-      m->Fail("must lie in [0.1, 10], got " + std::to_string(s.mesh_scale));
+      m->Fail("must lie in [0.1, 10], found " + m->value().dump());
   }
   auto fraction = [&](const char* key, double& out) {
     if (auto v = c.Find(key)) {
       out = v->Number();
-      if (!(out > 0 && out < 1)) v->Fail("must lie in (0, 1), got " + std::to_string(out));
+      if (!(out > 0 && out < 1)) v->Fail("must lie in (0, 1), found " + v->value().dump());
     }
   };
   auto count = [&](const char* key, int& out, int minimum) {
     if (auto v = c.Find(key)) {
       out = v->Integer();
       if (out < minimum)
-        v->Fail("must be at least " + std::to_string(minimum) + ", got " + std::to_string(out));
+        v->Fail("must be at least " + std::to_string(minimum) + ", found " + std::to_string(out));
     }
   };
   fraction("tolerance", s.tolerance);
@@ -64,7 +64,8 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   count("max_turns", s.max_turns, 0);
   if (auto q = c.Find("sequencing")) {
     if (q->value().is_string()) {
-      if (q->String() != "auto") q->Fail("must be \"auto\" or an integer ≥ 1 (1: off)");
+      if (q->String() != "auto")
+        q->Fail("must be \"auto\" or an integer ≥ 1 (1: off), found " + q->value().dump());
       s.sequencing = kAutoSequencing;
     } else {
       count("sequencing", s.sequencing, 1);
@@ -76,7 +77,7 @@ SolverSettings SceneParser::ReadSolver(const JsonCursor& c) {
   if (auto w = c.Find("max_wall_s")) {
     s.max_wall_s = w->Number();
     if (!(*s.max_wall_s > 0) || !std::isfinite(*s.max_wall_s))
-      w->Fail("must be a number of seconds > 0, got " + std::to_string(*s.max_wall_s));
+      w->Fail("must be a number of seconds > 0, found " + w->value().dump());
   }
   if (auto b = c.Find("branching"))
     s.branching = static_cast<Branching>(b->Choice({"stable", "fundamental"}));

@@ -5,8 +5,23 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace drape {
+namespace {
+
+// "the grippers are 'a', 'b'", "the only gripper is 'a'", "this scene has no
+// grippers": the names a reference may take, for a message.
+std::string NamesThereAre(const std::vector<std::string>& names, const std::string& kind) {
+  if (names.empty()) return "this scene has no " + kind + "s";
+  if (names.size() == 1) return "the only " + kind + " is '" + names[0] + "'";
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+  return "the " + kind + "s are " + list;
+}
+
+}  // namespace
 
 Path SceneParser::ReadPath(const JsonCursor& c) {
   c.ExpectObject({"line", "arc", "keyframes"});
@@ -47,14 +62,16 @@ Stage SceneParser::ReadStage(const JsonCursor& c) {
   if (auto i = c.Find("initial_increment")) {
     s.initial_increment = i->Number();
     if (!(s.initial_increment > 0 && s.initial_increment <= 1))
-      i->Fail("must lie in (0, 1], got " + std::to_string(s.initial_increment));
+      i->Fail("must lie in (0, 1], found " + i->value().dump());
   }
   if (auto ctl = c.Find("control"))
     s.control = static_cast<StepControl>(ctl->Choice({"arc_length", "load"}));
   if (auto r = c.Find("release"))
     for (const auto& item : r->Items()) s.release.push_back(item.String());
   if (auto m = c.Find("moves")) {
-    if (s.kind != StageKind::kMove) m->Fail("only a stage of kind 'move' has moves");
+    if (s.kind != StageKind::kMove)
+      m->Fail("only a stage of kind 'move' has moves; this stage is of kind '" +
+              c["kind"].String() + "'");
     for (const auto& item : m->Items()) {
       item.ExpectObject({"gripper", "obstacle", "path"});
       Move move;
@@ -80,17 +97,33 @@ void SceneParser::CheckStages(const JsonCursor& root, const Scene& scene) {
       if (g.name == name) return true;
     return false;
   };
+  std::vector<std::string> gripper_names;
+  for (const auto& g : scene.grippers) gripper_names.push_back(g.name);
+  std::vector<std::string> obstacle_names;
+  for (const auto& o : scene.obstacles) obstacle_names.push_back(o.name);
   for (size_t i = 0; i < scene.stages.size(); ++i) {
     const Stage& stage = scene.stages[i];
     const JsonCursor& c = stages[i];
-    if (stage.kind == StageKind::kGravity && !(scene.material.areal_weight > 0))
-      c["kind"].Fail("a gravity stage needs a positive material.areal_weight");
+    if (stage.kind == StageKind::kGravity && !(scene.material.areal_weight > 0)) {
+      // The weight as typed: the scene's own key, or the library material's.
+      const JsonCursor material = root["material"];
+      std::string found;
+      for (const char* key : {"areal_weight", "areal_density"})
+        if (material.Has(key))
+          found = std::string("material.") + key + " is " + AsTyped(material[key].value());
+      if (found.empty() && material.Has("library"))
+        found = "library material " + Quoted(material["library"].String()) + " weighs nothing";
+      c["kind"].Fail("a gravity stage needs a positive material.areal_weight" +
+                     (found.empty() ? std::string() : "; " + found));
+    }
     if (stage.kind == StageKind::kLoad && scene.loads.empty())
       c["kind"].Fail("a load stage needs at least one entry in 'loads'");
     auto releases = stage.release.empty() ? std::vector<JsonCursor>{} : c["release"].Items();
     for (size_t r = 0; r < stage.release.size(); ++r) {
       const std::string& name = stage.release[r];
-      if (!gripper_exists(name)) releases[r].Fail("no gripper is named '" + name + "'");
+      if (!gripper_exists(name))
+        releases[r].Fail("no gripper is named '" + name + "'; " +
+                         NamesThereAre(gripper_names, "gripper"));
       if (released.count(name))
         releases[r].Fail("gripper '" + name + "' was already released in " + released[name]);
       released[name] = "stage '" + stage.name + "'";
@@ -106,14 +139,17 @@ void SceneParser::CheckStages(const JsonCursor& root, const Scene& scene) {
         if (std::none_of(scene.obstacles.begin(), scene.obstacles.end(), [&](const Obstacle& o) {
               return o.name == name;
             }))
-          obstacle.Fail("no obstacle is named '" + name + "'");
+          obstacle.Fail("no obstacle is named '" + name + "'; " +
+                        NamesThereAre(obstacle_names, "obstacle"));
         if (!moved_obstacles.insert(name).second)
           obstacle.Fail("obstacle '" + name + "' is moved twice in one stage");
         continue;
       }
       const std::string& name = stage.moves[m].gripper;
       auto gripper = moves[m]["gripper"];
-      if (!gripper_exists(name)) gripper.Fail("no gripper is named '" + name + "'");
+      if (!gripper_exists(name))
+        gripper.Fail("no gripper is named '" + name + "'; " +
+                     NamesThereAre(gripper_names, "gripper"));
       if (released.count(name))
         gripper.Fail("gripper '" + name + "' was released in " + released[name]);
       if (!moved.insert(name).second)

@@ -11,23 +11,27 @@ namespace drape {
 
 std::optional<std::string> SequencingRefusal(const Scene& scene, int factor) {
   if (factor <= 1) return std::nullopt;
+  // Each reason names the factor, as solver.sequencing gives it.
+  const std::string sequencing = "sequencing " + std::to_string(factor);
   if (scene.stages.size() != 1)
-    return "sequencing solves one stage of weight or loads; this scene has " +
+    return sequencing + " solves one stage of weight or loads; this scene has " +
            std::to_string(scene.stages.size()) + " stages";
   const Stage& stage = scene.stages[0];
   if (stage.kind != StageKind::kGravity && stage.kind != StageKind::kLoad)
-    return "sequencing needs a stage that adds weight or loads: stage '" + stage.name +
+    return sequencing + " needs a stage that adds weight or loads: stage '" + stage.name +
            "' moves or holds, and its end depends on the path";
   if (!stage.moves.empty() || !stage.release.empty())
-    return "stage '" + stage.name + "' moves or releases something: its end depends on the path";
+    return sequencing + " cannot solve stage '" + stage.name +
+           "': it moves or releases something, and its end depends on the path";
   if (scene.contact && scene.contact->friction > 0)
-    return std::string("with friction the drape's end depends on the path");
+    return sequencing + " needs contact without friction: with friction the drape's end " +
+           "depends on the path";
   if (!scene.other_parts.empty())
-    return std::string("sequencing needs a fabric of one part; this one has ") +
+    return sequencing + " needs a fabric of one part; this one has " +
            std::to_string(scene.other_parts.size() + 1);
   if (!std::holds_alternative<RectangleOutline>(scene.fabric.outline) ||
       !scene.fabric.mesh.elements)
-    return std::string("sequencing needs a rectangle meshed by element counts");
+    return sequencing + " needs a rectangle meshed by element counts";
   const auto [nx, ny] = *scene.fabric.mesh.elements;
   if (nx % factor != 0 || ny % factor != 0 || nx / factor < 2 || ny / factor < 2)
     return std::to_string(factor) + " must divide the mesh's " + std::to_string(nx) + " × " +

@@ -216,9 +216,10 @@ class UnitParser {
   Unit Parse() {
     if (Peek().kind == TokenKind::kEnd) Fail("expected a unit");
     const Unit unit = Product();
-    ExpectOperatorOrEnd();
+    ExpectOperatorOrEnd(false);
     if (!std::isfinite(unit.si_factor) || unit.si_factor == 0.0) {
-      Fail("unit " + SingleQuoted(text_) + " is out of range");
+      Fail("unit " + SingleQuoted(text_) +
+           " is out of range (its factor to SI units must lie between about 1e-308 and 1e308)");
     }
     return unit;
   }
@@ -245,7 +246,8 @@ class UnitParser {
   void CheckExponents(const Dimension& e) const {
     if (std::abs(e.length) > kMaxExponent || std::abs(e.mass) > kMaxExponent ||
         std::abs(e.time) > kMaxExponent || std::abs(e.angle) > kMaxExponent) {
-      Fail("exponent too large");
+      Fail("exponent too large: " + SpelledOut(e) + " (at most " + std::to_string(kMaxExponent) +
+           ")");
     }
   }
 
@@ -280,7 +282,8 @@ class UnitParser {
       Fail("expected an integer exponent after '^', found " + Describe(digits));
     }
     if (error != std::errc() || value > kMaxExponent) {
-      Fail("exponent " + SingleQuoted(digits.text) + " is too large");
+      Fail("exponent " + SingleQuoted(digits.text) + " is too large (at most " +
+           std::to_string(kMaxExponent) + ")");
     }
     Take();
     return negative ? -value : value;
@@ -308,7 +311,7 @@ class UnitParser {
         const Unit inner = Product();
         if (Peek().kind != TokenKind::kClose) {
           if (Peek().kind == TokenKind::kEnd) Fail("missing ')'");
-          ExpectOperatorOrEnd();
+          ExpectOperatorOrEnd(true);
         }
         Take();
         --depth_;
@@ -319,8 +322,9 @@ class UnitParser {
     }
   }
 
-  // After a complete factor: anything but an operator is an error.
-  void ExpectOperatorOrEnd() {
+  // After a complete factor: anything but an operator (or, `in_parentheses`,
+  // a ')') is an error.
+  void ExpectOperatorOrEnd(bool in_parentheses) {
     const Token token = Peek();
     switch (token.kind) {
       case TokenKind::kEnd:
@@ -330,7 +334,8 @@ class UnitParser {
       case TokenKind::kOpen:
         Fail("expected '*' or '/' before " + SingleQuoted(token.text));
       default:
-        Fail("unexpected " + Describe(token));
+        Fail("unexpected " + Describe(token) + " (expected '*', '/', '^' or " +
+             (in_parentheses ? "')'" : "the end") + ")");
     }
   }
 
@@ -441,17 +446,20 @@ Quantity ParseQuantity(std::string_view text) {
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   const bool signed_twice = digits.size() < number.size() && digits.starts_with('-');
   if (error == std::errc::result_out_of_range) {
-    throw UnitError("number " + SingleQuoted(number) + " is out of range in " + Quoted(text));
+    throw UnitError("number " + SingleQuoted(number) +
+                    " is out of range (its size must lie between about 1e-308 and 1e308) in " +
+                    Quoted(text));
   }
   if (error != std::errc() || end != digits.data() + digits.size() || signed_twice) {
-    throw UnitError("malformed number " + SingleQuoted(number) + " in " + Quoted(text));
+    throw UnitError("malformed number " + SingleQuoted(number) +
+                    " (expected a number such as 0.5 or 2e-3) in " + Quoted(text));
   }
 
   const std::string_view unit_text = Trimmed(trimmed.substr(number.size()));
   const Unit unit = unit_text.empty() ? Unit{1.0, dim::kNone} : UnitParser(unit_text, text).Parse();
   const Quantity quantity{value * unit.si_factor, unit.dimension};
   if (!std::isfinite(quantity.value_si)) {
-    throw UnitError(Quoted(text) + " is out of range in SI units");
+    throw UnitError(Quoted(text) + " is out of range in SI units (at most about 1.8e308)");
   }
   return quantity;
 }

@@ -123,8 +123,8 @@ TEST(FabricParts, MistakesAreNamedAtTheirKey) {
                    "poisson_ratio": 0.3},
       "supports": [{"name": "s", "select": {"corners": true, "part": "lower"}}],
       "stages": [{"name": "weight", "kind": "gravity"}]})")
-                .find("supports[0].select.part: names a part of a fabric with several; this "
-                      "fabric has one"),
+                .find("supports[0].select.part: 'lower' names a part, but this fabric is one "
+                      "part: leave out 'part'"),
             std::string::npos);
   EXPECT_NE(ErrorOf(Plies(R"(, "solver": {"sequencing": 2})")).find("solver.sequencing: "),
             std::string::npos);

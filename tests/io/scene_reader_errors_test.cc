@@ -151,16 +151,16 @@ const std::vector<Case>& Cases() {
        [](json& d) {
          d["fabric"]["mesh"]["elements"] = json::array({1, -3});
        },
-       "fabric.mesh.elements[1]: must be at least 1, got -3"},
+       "fabric.mesh.elements[1]: must be at least 1, found -3"},
       {"more than 4 million elements",
        [](json& d) {
          d["fabric"]["mesh"]["elements"] = json::array({3000, 2000});
        },
-       "fabric.mesh.elements: more than 4 million elements (3000 x 2000)"},
+       "fabric.mesh.elements: 3000 x 2000 = 6000000 elements, more than the 4000000 allowed"},
       {"element counts for a disk",
        [](json& d) { d["fabric"]["outline"] = json::parse(R"({"disk": {"radius": "10 cm"}})"); },
-       "fabric.mesh.elements: element counts are for rectangle outlines; give 'size' (a target "
-       "element edge)"},
+       "fabric.mesh.elements: element counts are for rectangle outlines; this outline is a disk: "
+       "give 'size' (a target element edge)"},
       {"negative imperfection amplitude",
        [](json& d) { d["fabric"]["imperfection"] = json::parse(R"({"amplitude": "-1 mm"})"); },
        "fabric.imperfection.amplitude: must not be negative, found \"-1 mm\""},
@@ -168,21 +168,22 @@ const std::vector<Case>& Cases() {
        [](json& d) {
          d["fabric"]["imperfection"] = json::parse(R"({"amplitude": "0.1 mm", "seed": -1})");
        },
-       "fabric.imperfection.seed: expected a non-negative integer"},
+       "fabric.imperfection.seed: expected a non-negative integer, found -1"},
 
       // ---- quantities: the unit parser, through any quantity key ------------
       {"unit out of range",
        [](json& d) { d["fabric"]["elevation"] = "1 um^60"; },
-       "fabric.elevation: unit 'um^60' is out of range in \"1 um^60\""},
+       "fabric.elevation: unit 'um^60' is out of range (its factor to SI units must lie between "
+       "about 1e-308 and 1e308) in \"1 um^60\""},
       {"unit exponent too large",
        [](json& d) { d["fabric"]["elevation"] = "1 m^50*m^50"; },
-       "fabric.elevation: exponent too large in \"1 m^50*m^50\""},
+       "fabric.elevation: exponent too large: m^100 (at most 99) in \"1 m^50*m^50\""},
       {"unit exponent not an integer",
        [](json& d) { d["material"]["thickness"] = "1 m^x"; },
        "material.thickness: expected an integer exponent after '^', found 'x' in \"1 m^x\""},
       {"unit exponent over 99",
        [](json& d) { d["material"]["thickness"] = "1 m^100"; },
-       "material.thickness: exponent '100' is too large in \"1 m^100\""},
+       "material.thickness: exponent '100' is too large (at most 99) in \"1 m^100\""},
       {"unknown unit",
        [](json& d) { d["material"]["thickness"] = "5 furlong"; },
        "material.thickness: unknown unit 'furlong' (known: m, cm, mm, um, in, ft, N, kN, mN, gf, "
@@ -210,19 +211,22 @@ const std::vector<Case>& Cases() {
        "material.thickness: expected '*' or '/' before 'mm' in \"0.5 mm mm\""},
       {"unexpected character in a unit",
        [](json& d) { d["material"]["thickness"] = "0.5 mm)"; },
-       "material.thickness: unexpected ')' in \"0.5 mm)\""},
+       "material.thickness: unexpected ')' (expected '*', '/', '^' or the end) in \"0.5 mm)\""},
       {"empty quantity",
        [](json& d) { d["material"]["thickness"] = ""; },
        "material.thickness: empty quantity, expected a number and a unit such as \"0.489 mm\""},
       {"number out of range",
        [](json& d) { d["material"]["thickness"] = "1e400 mm"; },
-       "material.thickness: number '1e400' is out of range in \"1e400 mm\""},
+       "material.thickness: number '1e400' is out of range (its size must lie between about "
+       "1e-308 and 1e308) in \"1e400 mm\""},
       {"malformed number",
        [](json& d) { d["material"]["thickness"] = "0.5.1 mm"; },
-       "material.thickness: malformed number '0.5.1' in \"0.5.1 mm\""},
+       "material.thickness: malformed number '0.5.1' (expected a number such as 0.5 or 2e-3) in "
+       "\"0.5.1 mm\""},
       {"quantity out of range in SI",
        [](json& d) { d["material"]["youngs_modulus"] = "1e300 GPa"; },
-       "material.youngs_modulus: \"1e300 GPa\" is out of range in SI units"},
+       "material.youngs_modulus: \"1e300 GPa\" is out of range in SI units (at most about "
+       "1.8e308)"},
       {"unit of the wrong dimension",
        [](json& d) { d["material"]["youngs_modulus"] = "3 cm"; },
        "material.youngs_modulus: \"3 cm\" is a length, expected a force/area (Pa, kPa, MPa, GPa, "
@@ -241,7 +245,7 @@ const std::vector<Case>& Cases() {
       {"thickness not a quantity",
        [](json& d) { d["material"]["thickness"] = true; },
        "material.thickness: expected a length (m, cm, mm, in, ft) (a number in SI units or a "
-       "\"number unit\" string), found a boolean"},
+       "\"number unit\" string), found true"},
       {"no areal weight",
        [](json& d) { d["material"].erase("areal_weight"); },
        "material: expected one of 'areal_weight', 'areal_density'"},
@@ -268,10 +272,10 @@ const std::vector<Case>& Cases() {
        },
        "material.membrane.nu12: must lie in [0, 1.581) for a stable orthotropic law with these E1 "
        "and E2 (the bound is √(E1/E2)), found 1.6"},
-      {"angle not a quantity",
-       [](json& d) { d["material"]["angle_deg"] = true; },
-       "material.angle_deg: expected an angle (deg, rad) (a number in SI units or a \"number "
-       "unit\" string), found a boolean"},
+      {"angle with a typo of grain",
+       [](json& d) { d["material"]["angle_deg"] = "grian"; },
+       "material.angle_deg: expected \"grain\" or an angle (a number of degrees, or a \"number "
+       "unit\" string such as \"0.5 rad\"), found \"grian\""},
       {"grain of a rectangle",
        [](json& d) { d["material"]["angle_deg"] = "grain"; },
        "material.angle_deg: \"grain\" takes the warp from a pattern piece's grain line; this "
@@ -285,8 +289,8 @@ const std::vector<Case>& Cases() {
              {"file": "../patterns/garments.dxf", "piece": "SKIRT-FRONT", "rotation_deg": 30}}}])");
          d["material"]["angle_deg"] = "grain";
        },
-       "material.angle_deg: the parts' grain lines differ ('front' 90.000000 deg, 'turned' "
-       "120.000000 deg) and the parts share one material: give angle_deg"},
+       "material.angle_deg: the parts' grain lines differ ('front' 90 deg, 'turned' 120 deg) and "
+       "the parts share one material: give angle_deg"},
       {"library material with a typo",
        [](json& d) { d["material"] = json::parse(R"({"library": "cotton-twil"})"); },
        "material.library: no library material 'cotton-twil'; did you mean 'cotton-twill'?"},
@@ -296,7 +300,7 @@ const std::vector<Case>& Cases() {
        "cotton-twill-linear, polyester-plain-weave, polyester-plain-weave-block"},
       {"bending law not an object",
        [](json& d) { d["material"]["bending"] = "linear"; },
-       "material.bending: expected an object with a 'model'"},
+       "material.bending: expected an object with a 'model', found a string \"linear\""},
       {"empty moment unit",
        [](json& d) {
          d["material"]["bending"] = json::parse(R"({"model": "polynomial", "moment_unit": ""})");
@@ -306,7 +310,8 @@ const std::vector<Case>& Cases() {
        [](json& d) {
          d["material"]["bending"] = json::parse(R"({"model": "polynomial", "moment_unit": "cm"})");
        },
-       "material.bending.moment_unit: 'cm' is not a unit of force (N, gf, oz, lbf)"},
+       "material.bending.moment_unit: expected a unit of moment per width, such as gf*cm/cm or "
+       "N*m/m, found \"cm\""},
       {"no polynomial coefficient",
        [](json& d) {
          d["material"]["bending"] =
@@ -319,7 +324,7 @@ const std::vector<Case>& Cases() {
              R"({"model": "polynomial", "coefficients": [-1.5], "valid_to": "2.5 1/cm"})");
        },
        "material.bending.coefficients: the linear coefficient c1 (the initial bending rigidity) "
-       "must be positive"},
+       "must be positive, found -1.5"},
       {"branch of a curve given by points",
        [](json& d) {
          d["material"]["bending"] =
@@ -336,7 +341,8 @@ const std::vector<Case>& Cases() {
          d["material"]["bending"] =
              json::parse(R"({"model": "curve", "points": [[1, 1], [1, 2]]})");
        },
-       "material.bending.points[1]: curvatures must increase from point to point"},
+       "material.bending.points[1]: curvatures must increase from point to point, found 1 after "
+       "1"},
       {"measured hysteresis without a file",
        [](json& d) {
          d["material"]["bending"] = json::parse(R"({"model": "linear", "hysteresis": "measured"})");
@@ -356,26 +362,34 @@ const std::vector<Case>& Cases() {
              json::parse(R"({"model": "linear", "hysteresis": "-0.1 gf*cm/cm"})");
        },
        "material.bending.hysteresis: 2HB, the width of the moment-curvature loop, must not be "
-       "negative"},
+       "negative, found \"-0.1 gf*cm/cm\""},
+      {"hysteresis with a typo of measured",
+       [](json& d) {
+         d["material"]["bending"] = json::parse(R"({"model": "linear", "hysteresis": "mesured"})");
+       },
+       "material.bending.hysteresis: expected \"measured\" or 2HB, a moment per width (a number "
+       "in the law's moment_unit, or a \"number unit\" string such as \"0.1 gf*cm/cm\"), found "
+       "\"mesured\""},
 
       // ---- selections -------------------------------------------------------
       {"line of one point",
        [](json& d) { d["supports"][0]["select"] = json::parse(R"({"line": [[0, 0], [0, 0]]})"); },
-       "supports[0].select.line: the two ends of a line must differ"},
+       "supports[0].select.line: the two ends of a line must differ, found [0, 0] and [0, 0]"},
       {"box with min above max",
        [](json& d) {
          d["supports"][0]["select"] = json::parse(R"({"box": [["1 cm", 0], [0, "1 cm"]]})");
        },
-       "supports[0].select.box: expected [[xmin, ymin], [xmax, ymax]] with min <= max"},
+       "supports[0].select.box: expected [[xmin, ymin], [xmax, ymax]] with min <= max, found xmin "
+       "\"1 cm\" > xmax 0"},
       {"corners false",
        [](json& d) { d["supports"][0]["select"] = json::parse(R"({"corners": false})"); },
        "supports[0].select.corners: write \"corners\": true to select corners"},
       {"notch 0",
        [](json& d) { d["supports"][0]["select"] = json::parse(R"({"notch": 0})"); },
-       "supports[0].select.notch: counts from 1 (the first in the pattern file)"},
+       "supports[0].select.notch: counts from 1 (the first in the pattern file), found 0"},
       {"negative node index",
        [](json& d) { d["supports"][0]["select"] = json::parse(R"({"nodes": [-1]})"); },
-       "supports[0].select.nodes[0]: node indices start at 0"},
+       "supports[0].select.nodes[0]: node indices start at 0, found -1"},
       {"empty node list",
        [](json& d) { d["supports"][0]["select"] = json::parse(R"({"nodes": []})"); },
        "supports[0].select.nodes: an empty node list selects nothing"},
@@ -433,19 +447,20 @@ const std::vector<Case>& Cases() {
        },
        "obstacles[0].mesh.scale: a scale factor must be between 1e-6 and 1e6 (a positive number; "
        "a negative one would turn the mesh inside out), found -2"},
-      {"flat box",
+      {"box of negative height",
        [](json& d) {
          d["obstacles"] = json::parse(
-             R"([{"name": "table", "box": {"min": [0, 0, 0], "max": ["1 m", "1 m", 0]}}])");
+             R"([{"name": "table", "box": {"min": [0, 0, "1 cm"], "max": ["1 m", "1 m", 0]}}])");
        },
-       "obstacles[0].box.max: each coordinate of 'max' must exceed that of 'min' (a box of zero "
-       "or negative size)"},
+       "obstacles[0].box.max: each coordinate of 'max' must exceed that of 'min', found max[2] = 0 "
+       "and min[2] = \"1 cm\""},
       {"box edge radius too large",
        [](json& d) {
          AddTable(d);
          d["obstacles"][0]["box"]["edge_radius"] = "3 cm";
        },
-       "obstacles[0].box.edge_radius: must be smaller than half the box's smallest side"},
+       "obstacles[0].box.edge_radius: must be smaller than half the box's smallest side (2 cm), "
+       "found \"3 cm\""},
 
       // ---- contact ----------------------------------------------------------
       {"penalty of a barrier contact",
@@ -454,10 +469,10 @@ const std::vector<Case>& Cases() {
        "(its distance is contact.barrier_distance)"},
       {"penalty with a typo",
        [](json& d) { d["contact"] = json::parse(R"({"penalty": "atuo"})"); },
-       "contact.penalty: expected a number at the start of \"atuo\", e.g. \"0.489 mm\""},
+       "contact.penalty: expected \"auto\" or a force/length^3 (N/m^3, gf/cm^3), found \"atuo\""},
       {"negative friction",
        [](json& d) { d["contact"] = json::parse(R"({"friction": -0.2})"); },
-       "contact.friction: a friction coefficient must not be negative"},
+       "contact.friction: a friction coefficient must not be negative, found -0.2"},
       {"barrier distance of a penalty contact",
        [](json& d) { d["contact"] = json::parse(R"({"barrier_distance": "1 mm"})"); },
        "contact.barrier_distance: a barrier distance belongs to contact.law \"barrier\" (this "
@@ -472,10 +487,10 @@ const std::vector<Case>& Cases() {
        "stages[0].kind: 'fall' is not valid; expected one of 'gravity', 'load', 'move', 'hold'"},
       {"initial increment above 1",
        [](json& d) { d["stages"][0]["initial_increment"] = 1.5; },
-       "stages[0].initial_increment: must lie in (0, 1], got 1.500000"},
+       "stages[0].initial_increment: must lie in (0, 1], found 1.5"},
       {"moves in a gravity stage",
        [](json& d) { d["stages"][0]["moves"] = json::array(); },
-       "stages[0].moves: only a stage of kind 'move' has moves"},
+       "stages[0].moves: only a stage of kind 'move' has moves; this stage is of kind 'gravity'"},
       {"move stage without moves",
        [](json& d) {
          AddLift(d);
@@ -489,6 +504,14 @@ const std::vector<Case>& Cases() {
              json::parse(R"({"arc": {"center": [0, 0, 0], "axis": [0, 1, 0], "angle_deg": 0}})");
        },
        "stages[1].moves[0].path.arc.angle_deg: an arc of zero angle does not move"},
+      {"angle not a quantity",
+       [](json& d) {
+         AddLift(d);
+         d["stages"][1]["moves"][0]["path"] =
+             json::parse(R"({"arc": {"center": [0, 0, 0], "axis": [0, 1, 0], "angle_deg": true}})");
+       },
+       "stages[1].moves[0].path.arc.angle_deg: expected an angle (a number of degrees, or a "
+       "\"number unit\" string such as \"0.5 rad\"), found true"},
       {"keyframes without points",
        [](json& d) {
          AddLift(d);
@@ -497,13 +520,14 @@ const std::vector<Case>& Cases() {
        "stages[1].moves[0].path.keyframes.points: needs at least one point"},
       {"gravity stage of a weightless fabric",
        [](json& d) { d["material"]["areal_weight"] = 0; },
-       "stages[0].kind: a gravity stage needs a positive material.areal_weight"},
+       "stages[0].kind: a gravity stage needs a positive material.areal_weight; "
+       "material.areal_weight is 0"},
       {"load stage without loads",
        [](json& d) { d["stages"][0]["kind"] = "load"; },
        "stages[0].kind: a load stage needs at least one entry in 'loads'"},
       {"release of an unknown gripper",
        [](json& d) { d["stages"][0]["release"] = json::array({"lifter"}); },
-       "stages[0].release[0]: no gripper is named 'lifter'"},
+       "stages[0].release[0]: no gripper is named 'lifter'; this scene has no grippers"},
       {"gripper released twice",
        [](json& d) {
          AddGripper(d);
@@ -517,7 +541,7 @@ const std::vector<Case>& Cases() {
          d["stages"][1]["moves"][0].erase("gripper");
          d["stages"][1]["moves"][0]["obstacle"] = "table";
        },
-       "stages[1].moves[0].obstacle: no obstacle is named 'table'"},
+       "stages[1].moves[0].obstacle: no obstacle is named 'table'; this scene has no obstacles"},
       {"obstacle moved twice",
        [](json& d) {
          AddTable(d);
@@ -532,7 +556,7 @@ const std::vector<Case>& Cases() {
          AddLift(d);
          d["stages"][1]["moves"][0]["gripper"] = "hadn";
        },
-       "stages[1].moves[0].gripper: no gripper is named 'hadn'"},
+       "stages[1].moves[0].gripper: no gripper is named 'hadn'; the only gripper is 'hand'"},
       {"move of a released gripper",
        [](json& d) {
          AddLift(d);
@@ -552,7 +576,7 @@ const std::vector<Case>& Cases() {
        [](json& d) {
          d["probes"] = json::parse(R"([{"name": "tip", "at": ["20 cm", 0], "part": "lower"}])");
        },
-       "probes[0].part: names a part of a fabric with several; this fabric has one"},
+       "probes[0].part: 'lower' names a part, but this fabric is one part: leave out 'part'"},
       {"two probes of one name",
        [](json& d) {
          d["probes"] = json::parse(
@@ -566,25 +590,25 @@ const std::vector<Case>& Cases() {
        "solver.preset: 'fast' is not a preset; one of draft, balanced, accurate"},
       {"mesh scale out of range",
        [](json& d) { d["solver"] = json::parse(R"({"mesh_scale": 20})"); },
-       "solver.mesh_scale: must lie in [0.1, 10], got 20.000000"},
+       "solver.mesh_scale: must lie in [0.1, 10], found 20"},
       {"tolerance out of range",
        [](json& d) { d["solver"] = json::parse(R"({"tolerance": 1.5})"); },
-       "solver.tolerance: must lie in (0, 1), got 1.500000"},
+       "solver.tolerance: must lie in (0, 1), found 1.5"},
       {"count below its minimum",
        [](json& d) { d["solver"] = json::parse(R"({"max_steps": -5})"); },
-       "solver.max_steps: must be at least 1, got -5"},
+       "solver.max_steps: must be at least 1, found -5"},
       {"integer too large",
        [](json& d) { d["solver"]["max_steps"] = 3000000000u; },
-       "solver.max_steps: integer 3000000000 is too large"},
+       "solver.max_steps: integer 3000000000 is too large (at most 2147483647)"},
       {"integer too small",
        [](json& d) { d["solver"]["max_iterations"] = -3000000000LL; },
-       "solver.max_iterations: integer -3000000000 is too small"},
+       "solver.max_iterations: integer -3000000000 is too small (at least -2147483648)"},
       {"sequencing word",
        [](json& d) { d["solver"] = json::parse(R"({"sequencing": "often"})"); },
-       "solver.sequencing: must be \"auto\" or an integer ≥ 1 (1: off)"},
+       "solver.sequencing: must be \"auto\" or an integer ≥ 1 (1: off), found \"often\""},
       {"wall-clock limit of zero",
        [](json& d) { d["solver"] = json::parse(R"({"max_wall_s": 0})"); },
-       "solver.max_wall_s: must be a number of seconds > 0, got 0.000000"},
+       "solver.max_wall_s: must be a number of seconds > 0, found 0"},
 
       // ---- sequencing (core/model/sequencing_check.cc, checked by the reader)
       {"sequencing two stages",
@@ -592,40 +616,42 @@ const std::vector<Case>& Cases() {
          d["stages"].push_back(json::parse(R"({"name": "rest", "kind": "hold"})"));
          d["solver"]["sequencing"] = 2;
        },
-       "solver.sequencing: sequencing solves one stage of weight or loads; this scene has 2 "
+       "solver.sequencing: sequencing 2 solves one stage of weight or loads; this scene has 2 "
        "stages"},
       {"sequencing a hold stage",
        [](json& d) {
          d["stages"] = json::parse(R"([{"name": "rest", "kind": "hold"}])");
          d["solver"]["sequencing"] = 2;
        },
-       "solver.sequencing: sequencing needs a stage that adds weight or loads: stage 'rest' moves "
-       "or holds, and its end depends on the path"},
+       "solver.sequencing: sequencing 2 needs a stage that adds weight or loads: stage 'rest' "
+       "moves or holds, and its end depends on the path"},
       {"sequencing a release",
        [](json& d) {
          AddGripper(d);
          d["stages"][0]["release"] = json::array({"hand"});
          d["solver"]["sequencing"] = 2;
        },
-       "solver.sequencing: stage 'SW' moves or releases something: its end depends on the path"},
+       "solver.sequencing: sequencing 2 cannot solve stage 'SW': it moves or releases something, "
+       "and its end depends on the path"},
       {"sequencing with friction",
        [](json& d) {
          d["contact"] = json::parse(R"({"friction": 0.3})");
          d["solver"]["sequencing"] = 2;
        },
-       "solver.sequencing: with friction the drape's end depends on the path"},
+       "solver.sequencing: sequencing 2 needs contact without friction: with friction the drape's "
+       "end depends on the path"},
       {"sequencing two parts",
        [](json& d) {
          MakeTwoParts(d);
          d["solver"]["sequencing"] = 2;
        },
-       "solver.sequencing: sequencing needs a fabric of one part; this one has 2"},
+       "solver.sequencing: sequencing 2 needs a fabric of one part; this one has 2"},
       {"sequencing a mesh by size",
        [](json& d) {
          d["fabric"]["mesh"] = json::parse(R"({"size": "1 cm"})");
          d["solver"]["sequencing"] = 2;
        },
-       "solver.sequencing: sequencing needs a rectangle meshed by element counts"},
+       "solver.sequencing: sequencing 2 needs a rectangle meshed by element counts"},
       {"sequencing factor not dividing the mesh",
        [](json& d) { d["solver"]["sequencing"] = 4; },
        "solver.sequencing: 4 must divide the mesh's 8 × 1 elements and leave at least 2 each "
@@ -643,8 +669,7 @@ const std::vector<Case>& Cases() {
 
 // The cases whose message shows the value the edit typed, as the message
 // shows it: a quantity or a word in the quotes the message puts around it, a
-// bare number as JSON writes it. (Messages that show a bare number
-// reformatted, "1.5" as "1.500000", are not listed.)
+// bare number as JSON writes it.
 struct TypedValue {
   const char* name;
   const char* shown;
@@ -662,6 +687,7 @@ constexpr TypedValue kTypedValues[] = {
     {"element count below 1", "-3"},
     {"more than 4 million elements", "3000"},
     {"negative imperfection amplitude", "\"-1 mm\""},
+    {"negative imperfection seed", "found -1"},
     {"unit out of range", "\"1 um^60\""},
     {"unit exponent too large", "\"1 m^50*m^50\""},
     {"unit exponent not an integer", "\"1 m^x\""},
@@ -680,14 +706,25 @@ constexpr TypedValue kTypedValues[] = {
     {"unit of the wrong dimension", "\"3 cm\""},
     {"quantity without a unit", "\"5\""},
     {"negative thickness", "\"-0.1 mm\""},
+    {"thickness not a quantity", "found true"},
     {"poisson ratio as a string", "\"0.3\""},
     {"poisson ratio out of range", "found 0.7"},
     {"orthotropic nu12 out of range", "found 1.6"},
+    {"angle with a typo of grain", "\"grian\""},
     {"grain of a rectangle", "\"grain\""},
     {"library material with a typo", "'cotton-twil'"},
     {"unknown library material", "'velvet'"},
-    {"moment unit of the wrong dimension", "'cm'"},
+    {"bending law not an object", "\"linear\""},
+    {"moment unit of the wrong dimension", "\"cm\""},
+    {"negative linear coefficient", "found -1.5"},
+    {"curvatures not increasing", "found 1 after 1"},
     {"measured hysteresis without a file", "\"measured\""},
+    {"negative hysteresis", "\"-0.1 gf*cm/cm\""},
+    {"hysteresis with a typo of measured", "\"mesured\""},
+    {"line of one point", "[0, 0]"},
+    {"box with min above max", "\"1 cm\""},
+    {"notch 0", "found 0"},
+    {"negative node index", "found -1"},
     {"unknown part", "'top'"},
     {"name not a string", "number 7"},
     {"gripper named as a support", "'root'"},
@@ -695,9 +732,16 @@ constexpr TypedValue kTypedValues[] = {
     {"force given as a moment", "\"1 N*m\""},
     {"missing mesh file", "'/nonexistent/form.obj'"},
     {"negative mesh scale", "found -2"},
+    {"box of negative height", "\"1 cm\""},
+    {"box edge radius too large", "\"3 cm\""},
     {"penalty with a typo", "\"atuo\""},
+    {"negative friction", "found -0.2"},
     {"self contact not a boolean", "\"yes\""},
     {"unknown stage kind", "'fall'"},
+    {"initial increment above 1", "found 1.5"},
+    {"moves in a gravity stage", "'gravity'"},
+    {"angle not a quantity", "found true"},
+    {"gravity stage of a weightless fabric", "is 0"},
     {"release of an unknown gripper", "'lifter'"},
     {"gripper released twice", "'hand'"},
     {"move of an unknown obstacle", "'table'"},
@@ -705,11 +749,22 @@ constexpr TypedValue kTypedValues[] = {
     {"move of an unknown gripper", "'hadn'"},
     {"move of a released gripper", "'hand'"},
     {"gripper moved twice", "'hand'"},
+    {"part of a fabric of one part", "'lower'"},
     {"two probes of one name", "'tip'"},
     {"unknown preset", "'fast'"},
-    {"count below its minimum", "got -5"},
+    {"mesh scale out of range", "found 20"},
+    {"tolerance out of range", "found 1.5"},
+    {"count below its minimum", "found -5"},
     {"integer too large", "3000000000"},
     {"integer too small", "-3000000000"},
+    {"sequencing word", "\"often\""},
+    {"wall-clock limit of zero", "found 0"},
+    {"sequencing two stages", "sequencing 2"},
+    {"sequencing a hold stage", "sequencing 2"},
+    {"sequencing a release", "sequencing 2"},
+    {"sequencing with friction", "sequencing 2"},
+    {"sequencing two parts", "sequencing 2"},
+    {"sequencing a mesh by size", "sequencing 2"},
     {"sequencing factor not dividing the mesh", "4 must divide"},
     {"sequencing factor not dividing the solved mesh", "mesh_scale 0.5"},
 };
@@ -717,7 +772,7 @@ constexpr TypedValue kTypedValues[] = {
 // The value itself, as it stands in the scene: `shown` without the text
 // around it in the message ("found 0.7" → 0.7) and without its quotes.
 std::string BareValue(std::string shown) {
-  for (const char* prefix : {"found ", "got ", "number ", "version ", "mesh_scale "})
+  for (const char* prefix : {"found ", "number ", "version ", "mesh_scale ", "is ", "sequencing "})
     if (shown.rfind(prefix, 0) == 0) shown.erase(0, std::string(prefix).size());
   if (auto space = shown.find(' '); space != std::string::npos && shown.front() != '"')
     shown.erase(space);  // "4 must divide" → 4

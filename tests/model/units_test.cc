@@ -245,7 +245,9 @@ TEST(Units, MalformedNumbers) {
   EXPECT_TRUE(Contains(QuantityError("abc"), "expected a number at the start of \"abc\""));
   EXPECT_TRUE(Contains(QuantityError("inf"), "expected a number"));
   EXPECT_TRUE(Contains(QuantityError("nan m"), "expected a number"));
-  EXPECT_TRUE(Contains(QuantityError("1.2.3 m"), "malformed number '1.2.3' in \"1.2.3 m\""));
+  EXPECT_TRUE(Contains(QuantityError("1.2.3 m"),
+                       "malformed number '1.2.3' (expected a number such as 0.5 or 2e-3) in "
+                       "\"1.2.3 m\""));
   EXPECT_TRUE(Contains(QuantityError("+-3 m"), "malformed number '+-3'"));
   EXPECT_TRUE(Contains(QuantityError("3-4 m"), "malformed number '3-4'"));
   EXPECT_TRUE(Contains(QuantityError("- m"), "malformed number '-'"));
