@@ -29,7 +29,9 @@
 
 #include "app/commands.h"
 #include "core/fe/material_section.h"
+#include "core/fe/textile_figures.h"
 #include "core/io/kawabata_reader.h"
+#include "core/io/library_fabric.h"
 #include "core/io/material_library.h"
 #include "core/io/scene_reader.h"
 #include "core/mechanics/moment_curvature.h"
@@ -40,13 +42,8 @@
 namespace drape::app {
 namespace {
 
-constexpr double kPerCm = 100.0;                    // 1/cm in 1/m
-constexpr double kGfCmPerCm = 9.80665e-3;           // gf·cm/cm in N·m/m
-constexpr double kGfCm2PerCm = 9.80665e-5;          // gf·cm²/cm in N·m²/m
-constexpr double kGfPerCm = 0.980665;               // gf/cm in N/m
-constexpr double kStandardGravity = 9.80665;        // m/s², weight to mass
-constexpr double kDegree = std::numbers::pi / 180;  // rad
-constexpr double kKesTensileLoad = 500;             // gf/cm, where KES-FB1 reads EMT
+constexpr double kPerCm = 100.0;           // 1/cm in 1/m
+constexpr double kGfCmPerCm = 9.80665e-3;  // gf·cm/cm in N·m/m
 
 struct FitArgs {
   std::string file;
@@ -203,92 +200,6 @@ int RunList(bool json) {
 
 // ---- material show --------------------------------------------------------
 
-// A library entry's figures in textile units, from the SI material the scene
-// reader builds of it.
-struct TextileFigures {
-  double thickness_mm = 0, weight_g_per_m2 = 0;
-  double bending_warp = 0, bending_weft = 0;        // Kawabata B [gf·cm²/cm]
-  double hysteresis_warp = 0, hysteresis_weft = 0;  // 2HB [gf·cm/cm]
-  double shear = 0;                                 // G [gf/(cm·deg)]
-  double tensile_warp = 0, tensile_weft = 0;        // E·h [gf/cm]
-  double poisson_ratio = 0;
-  std::string membrane, bending_warp_law, bending_weft_law;
-};
-
-// The material a scene in the working directory gets with
-// "material": {"library": name}: a one-element scene, read as any other.
-Material LibraryMaterialAsScene(const std::string& name) {
-  const nlohmann::json scene = {
-      {"drape_scene", 1},
-      {"fabric",
-       {{"outline", {{"rectangle", {{"size", {1, 1}}}}}}, {"mesh", {{"elements", {1, 1}}}}}},
-      {"material", {{"library", name}}},
-      {"stages", {{{"name", "show"}, {"kind", "hold"}}}}};
-  return SceneFromJson(scene, std::filesystem::current_path()).material;
-}
-
-// Kawabata's B of a strip law: its mean slope between K = 0.5 and 1.5 1/cm
-// (for a linear law, its rigidity).
-double KawabataB(const MomentCurvatureLaw& strip) {
-  return (strip.Moment(1.5 * kPerCm) - strip.Moment(0.5 * kPerCm)) / kPerCm / kGfCm2PerCm;
-}
-
-const char* LawName(const BendingLaw& law) {
-  return std::visit(Overloaded{[](const LinearBending&) { return "linear"; },
-                               [](const PolynomialBending&) { return "polynomial"; },
-                               [](const CurveBending&) { return "curve"; }},
-                    law);
-}
-
-// Membrane moduli [Pa]: warp, weft, in-plane shear, and ν (ν₁₂).
-struct Moduli {
-  double warp, weft, shear, poisson;
-};
-Moduli MembraneModuli(const Membrane& membrane) {
-  return std::visit(
-      Overloaded{[](const IsotropicMembrane& m) {
-                   const double g = m.youngs_modulus / (2 * (1 + m.poisson_ratio));
-                   return Moduli{m.youngs_modulus, m.youngs_modulus, g, m.poisson_ratio};
-                 },
-                 [](const OrthotropicMembrane& m) {
-                   return Moduli{m.e1, m.e2, m.g12, m.nu12};
-                 }},
-      membrane);
-}
-
-TextileFigures FiguresOf(const Material& m) {
-  const double h = m.thickness;
-  const Moduli e = MembraneModuli(m.membrane);
-  TextileFigures f;
-  f.thickness_mm = h * 1e3;
-  f.weight_g_per_m2 = m.areal_weight / kStandardGravity * 1e3;
-  f.membrane = std::holds_alternative<IsotropicMembrane>(m.membrane) ? "isotropic" : "orthotropic";
-  f.tensile_warp = e.warp * h / kGfPerCm;
-  f.tensile_weft = e.weft * h / kGfPerCm;
-  f.shear = e.shear * h * kDegree / kGfPerCm;
-  f.poisson_ratio = e.poisson;
-  // The strip laws as the engine builds them (MakeMaterialSection): without a
-  // weft law the warp law bends every direction.
-  const BendingLaw& weft_law = m.bending.weft ? *m.bending.weft : m.bending.warp;
-  const auto warp = MakeStripLaw(m.bending.warp, e.warp * h * h * h / 12, "material.bending");
-  const auto weft = m.bending.weft
-                        ? MakeStripLaw(weft_law, e.weft * h * h * h / 12, "material.bending.weft")
-                        : warp;
-  f.bending_warp = KawabataB(*warp);
-  f.bending_weft = KawabataB(*weft);
-  f.hysteresis_warp = m.bending.warp_hysteresis.width / kGfCmPerCm;
-  f.hysteresis_weft =
-      (m.bending.weft ? m.bending.weft_hysteresis : m.bending.warp_hysteresis).width / kGfCmPerCm;
-  f.bending_warp_law = LawName(m.bending.warp);
-  f.bending_weft_law = LawName(weft_law);
-  return f;
-}
-
-// The extension at the KES-FB1 load under a linear membrane [%].
-double EmtPercent(double tensile_gf_per_cm) {
-  return kKesTensileLoad / tensile_gf_per_cm * 100;
-}
-
 // A finite number, or JSON null (never NaN in the output).
 nlohmann::ordered_json Finite(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
@@ -370,7 +281,7 @@ int RunShow(const std::string& name, bool json) {
   }
   try {
     const LibraryMaterial entry = ReadLibraryMaterial(*file);
-    const TextileFigures figures = FiguresOf(LibraryMaterialAsScene(name));
+    const TextileFigures figures = FiguresOf(LibraryFabric(name, std::filesystem::current_path()));
     if (json)
       std::cout << FiguresJson(name, entry, figures).dump(2) << "\n";
     else

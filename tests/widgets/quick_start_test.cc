@@ -63,7 +63,7 @@ class QuickStart : public Widgets {
 
 TEST_F(QuickStart, AsTheReadmeSays) {
   MainWindow window;
-  window.resize(1280, 860);
+  window.resize(1440, 900);
   window.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
 
@@ -79,7 +79,7 @@ TEST_F(QuickStart, AsTheReadmeSays) {
   window.findChild<QAction*>("edit.material")->trigger();
   auto* dialog = window.findChild<MaterialDialog*>();
   ASSERT_NE(dialog, nullptr);
-  dialog->library()->setCurrentText("cotton-twill");
+  ASSERT_TRUE(dialog->chooseLibrary("cotton-twill"));
   ASSERT_TRUE(dialog->applyLibrary()) << dialog->message().toStdString();
   EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.0489e-2);  // the paper's h
   QTest::qWait(100);

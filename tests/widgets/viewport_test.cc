@@ -440,7 +440,7 @@ TEST_F(Widgets, MaterialDialogImportsKawabataDataAndLibraryMaterials) {
   EXPECT_FALSE(dialog.applyBending());
   std::filesystem::remove(bad);
 
-  dialog.library()->setCurrentText("cotton-twill");
+  ASSERT_TRUE(dialog.chooseLibrary("cotton-twill"));
   ASSERT_TRUE(dialog.applyLibrary()) << dialog.message().toStdString();
   EXPECT_DOUBLE_EQ(doc->scene().material.thickness, 0.0489e-2);
   EXPECT_TRUE(std::holds_alternative<PolynomialBending>(doc->scene().material.bending.warp));

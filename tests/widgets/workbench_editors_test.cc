@@ -225,7 +225,7 @@ TEST_F(Widgets, NothingEditsTheSceneWhileARunWorksOnIt) {
   window.run();
   window.pauseOrResume();
   const Scene running = doc->scene();
-  dialog.library()->setCurrentText("cotton-twill");
+  ASSERT_TRUE(dialog.chooseLibrary("cotton-twill"));
   EXPECT_FALSE(dialog.applyLibrary());
   EXPECT_NE(dialog.message().toStdString().find("a run is working on the scene"), std::string::npos)
       << dialog.message().toStdString();

@@ -205,15 +205,14 @@ TEST_F(WorkbenchParts, TheTimelineShowsStepI) {
   QTest::qWait(20);  // the view follows the newest step, once
   EXPECT_EQ(view->currentStep(), 3);
   EXPECT_EQ(view->stepLabel()->text().toStdString(),
-            "step 3 of 3 — R 75 % — stable rest state: yes");
+            "step 3 of 3, stable rest state: yes — R 75 %");
 
   QSignalSpy shown(view, &ViewController::stepShown);
   view->timeline()->setValue(2);
   ASSERT_EQ(shown.count(), 1);
   EXPECT_EQ(shown.last().at(0).toInt(), 2);
   EXPECT_EQ(window_->currentStep(), 2);
-  EXPECT_EQ(view->stepLabel()->text().toStdString(),
-            "step 2 of 3 — R 50 % — stable rest state: no");
+  EXPECT_EQ(view->stepLabel()->text().toStdString(), "step 2 of 3, stable rest state: no — R 50 %");
   EXPECT_EQ(view->shownPositions(), view->step(2).state.positions);
   window_->showStep(0);
   EXPECT_EQ(view->stepLabel()->text().toStdString(), "reference state");

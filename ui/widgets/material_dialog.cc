@@ -14,6 +14,7 @@
 #include <QPushButton>
 #include <QScatterSeries>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QVBoxLayout>
 #include <QValueAxis>
 #include <nlohmann/json.hpp>
@@ -25,7 +26,10 @@
 #include "core/io/material_library.h"
 #include "core/mechanics/moment_curvature.h"
 #include "core/mechanics/moment_curvature_fit.h"
+#include "ui/widgets/fabric_cards.h"
+#include "ui/widgets/fabric_summary_form.h"
 #include "ui/widgets/scene_document.h"
+#include "ui/widgets/scene_part_watch.h"
 
 namespace drape {
 namespace {
@@ -38,18 +42,28 @@ constexpr double kGfCmPerCm = 9.80665e-3;  // N·m/m per gf·cm/cm
 MaterialDialog::MaterialDialog(SceneDocument* document, QWidget* parent)
     : QDialog(parent), document_(document) {
   setWindowTitle("Material");
-  auto* layout = new QVBoxLayout(this);
+  auto* outer = new QVBoxLayout(this);
+  tabs_ = new QTabWidget(this);
+  outer->addWidget(tabs_, 1);
 
-  auto* library_row = new QHBoxLayout;
-  library_ = new QComboBox(this);
-  for (const auto& name : LibraryMaterialNames(MaterialLibraryDirs(document->directory())))
-    library_->addItem(QString::fromStdString(name));
-  auto* use_library = new QPushButton("Use library material", this);
-  library_row->addWidget(new QLabel("Library:", this));
-  library_row->addWidget(library_, 1);
-  library_row->addWidget(use_library);
-  layout->addLayout(library_row);
+  // The library, as cards in a lab's figures.
+  auto* library_page = new QWidget(this);
+  auto* library_layout = new QVBoxLayout(library_page);
+  cards_ = new FabricCards(document->directory(), library_page);
+  library_layout->addWidget(cards_, 1);
+  auto* use_library = new QPushButton("Use this fabric", library_page);
+  library_layout->addWidget(use_library);
   connect(use_library, &QPushButton::clicked, this, &MaterialDialog::applyLibrary);
+  connect(cards_, &QListWidget::itemDoubleClicked, this, &MaterialDialog::applyLibrary);
+  tabs_->addTab(library_page, "Library");
+
+  summary_ = new FabricSummaryForm(document, this);
+  tabs_->addTab(summary_, "Lab summary (KES-FB, FAST)");
+
+  // A measured bending law from a Kawabata file.
+  auto* curve_page = new QWidget(this);
+  auto* layout = new QVBoxLayout(curve_page);
+  tabs_->addTab(curve_page, "Kawabata bending curve");
 
   auto* form = new QFormLayout;
   auto* file_row = new QHBoxLayout;
@@ -90,23 +104,27 @@ MaterialDialog::MaterialDialog(SceneDocument* document, QWidget* parent)
   form->addRow("applies to", direction_);
   layout->addLayout(form);
 
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  layout->addWidget(message_);
   chart_ = new QChart;
   chart_->legend()->setAlignment(Qt::AlignBottom);
-  auto* view = new QChartView(chart_, this);
+  auto* view = new QChartView(chart_, curve_page);
   view->setMinimumSize(480, 300);
   layout->addWidget(view, 1);
-
-  auto* buttons = new QDialogButtonBox(this);
-  QPushButton* show = buttons->addButton("Preview", QDialogButtonBox::ActionRole);
-  QPushButton* apply = buttons->addButton("Apply bending law", QDialogButtonBox::ApplyRole);
-  buttons->addButton(QDialogButtonBox::Close);
-  layout->addWidget(buttons);
+  auto* curve_buttons = new QDialogButtonBox(curve_page);
+  QPushButton* show = curve_buttons->addButton("Preview", QDialogButtonBox::ActionRole);
+  QPushButton* apply = curve_buttons->addButton("Apply bending law", QDialogButtonBox::ApplyRole);
+  layout->addWidget(curve_buttons);
   connect(show, &QPushButton::clicked, this, &MaterialDialog::preview);
   connect(apply, &QPushButton::clicked, this, &MaterialDialog::applyBending);
+
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  outer->addWidget(message_);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+  outer->addWidget(buttons);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  // An edit made here shows in the summary's fields.
+  new ScenePartWatch(
+      document_, SceneDocument::Part::kMaterial, [this] { summary_->showScene(); }, this);
 }
 
 QString MaterialDialog::message() const {
@@ -268,13 +286,18 @@ bool MaterialDialog::applyBending() {
   return done;
 }
 
+bool MaterialDialog::chooseLibrary(const QString& name) {
+  return cards_->choose(name);
+}
+
 bool MaterialDialog::applyLibrary() {
-  if (library_->currentText().isEmpty()) return false;
+  const QString name = cards_->chosen();
+  if (name.isEmpty()) return false;
   // The scene reader resolves the name, as for a scene that names it.
   nlohmann::json document = document_->json();
-  document["material"] = {{"library", library_->currentText().toStdString()}};
+  document["material"] = {{"library", name.toStdString()}};
   QString problem;
-  if (!document_->tryApplyJson("material " + library_->currentText(), document, &problem)) {
+  if (!document_->tryApplyJson("material " + name, document, &problem)) {
     message_->setStyleSheet("color: #b00020");
     message_->setText(problem);
     return false;

@@ -1,4 +1,6 @@
-// The material dialog: a library material, or a bending law imported from
+// The material dialog, in three tabs: the library as cards in a lab's
+// figures (FabricCards), a fabric entered from a KES-FB or FAST summary
+// (FabricSummaryForm), or a bending law imported from
 // Kawabata (KES-FB2) data — file, branch, columns, law (the measured curve
 // or the paper's polynomial) — with the measured points and the law drawn
 // together (Qt Charts) and the fit's RMS error. The same reader and fits as
@@ -19,11 +21,14 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
+class QTabWidget;
 
 namespace drape {
 
 class MomentCurvatureLaw;
 
+class FabricCards;
+class FabricSummaryForm;
 class SceneDocument;
 
 class MaterialDialog : public QDialog {
@@ -36,7 +41,13 @@ class MaterialDialog : public QDialog {
   QComboBox* branch() const { return branch_; }
   QComboBox* law() const { return law_; }
   QSpinBox* degree() const { return degree_; }
-  QComboBox* library() const { return library_; }
+  // The library as cards (Library tab); a fabric entered from a lab's
+  // summary (its own tab).
+  FabricCards* library() const { return cards_; }
+  FabricSummaryForm* labSummary() const { return summary_; }
+  QTabWidget* tabs() const { return tabs_; }
+  // Chooses the library card of `name`; false when there is none.
+  bool chooseLibrary(const QString& name);
   // "both" (one law), "warp" or "weft" (that direction's law only).
   QComboBox* direction() const { return direction_; }
 
@@ -48,7 +59,7 @@ class MaterialDialog : public QDialog {
   // The previewed law into the scene's bending for direction() (one edit);
   // false if none, or when the engine refuses it (the message says why).
   bool applyBending();
-  // The library material chosen into the scene (one edit).
+  // The library fabric chosen into the scene (one edit).
   bool applyLibrary();
 
   // The plot's axes and values (and the message's numbers) in `system`;
@@ -60,7 +71,10 @@ class MaterialDialog : public QDialog {
  private:
   SceneDocument* document_;
   QLineEdit* file_;
-  QComboBox *branch_, *law_, *library_, *direction_;
+  QComboBox *branch_, *law_, *direction_;
+  QTabWidget* tabs_;
+  FabricCards* cards_;
+  FabricSummaryForm* summary_;
   QLineEdit *curvature_column_, *moment_column_;
   QSpinBox* degree_;
   QLabel* message_;

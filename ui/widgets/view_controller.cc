@@ -273,12 +273,12 @@ void ViewController::showStep(int index) {
     if (s.contact) SetContactFields(*s.contact, frame);
     // λ in the user's words: how far through its stage; and whether the
     // state is one a real part could rest in (no negative pivot).
-    step_label_->setText(QString("step %1 of %2 — %3 %4 % — stable rest state: %5")
+    step_label_->setText(QString("step %1 of %2, stable rest state: %3 — %4 %5 %")
                              .arg(s.step)
                              .arg(stepCount())
+                             .arg(s.negative_pivots == 0 ? "yes" : "no")
                              .arg(QString::fromStdString(s.stage_name))
-                             .arg(100 * s.lambda, 0, 'f', 0)
-                             .arg(s.negative_pivots == 0 ? "yes" : "no"));
+                             .arg(100 * s.lambda, 0, 'f', 0));
     step_label_->setToolTip(
         QString("λ = %1 of the stage's load or motion. Stable rest state: the tangent stiffness "
                 "has %2 negative pivots (0: a state a real part can rest in; more: it would move "
