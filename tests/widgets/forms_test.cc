@@ -86,8 +86,10 @@ TEST_F(Widgets, FormIsAddedMovedTurnedScaledAndTheFabricLiesOnIt) {
   // A wrong scale: the reader's message with the key, nothing changed.
   const Scene before = doc->scene();
   EXPECT_FALSE(form->place("10 cm, 5 cm, 2 cm", "30", "-1"));
-  EXPECT_NE(form->message().toStdString().find("obstacles[0].mesh.scale"), std::string::npos)
+  // The edit in the editor's words beside the reader's, which names the key.
+  EXPECT_EQ(form->message().toStdString().rfind("place form 1 — obstacles[0].mesh.scale: ", 0), 0u)
       << form->message().toStdString();
+  EXPECT_TRUE(form->message().endsWith("found -1")) << form->message().toStdString();
   EXPECT_EQ(doc->scene(), before);
 
   // Dragged in the view by its handle: the form moves, the fabric with it.

@@ -12,6 +12,7 @@
 #include <QTest>
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,13 @@
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/scene_templates.h"
 #include "widgets/gui_test.h"
+
+namespace drape {
+// How a failing case names its template.
+inline void PrintTo(const SceneTemplate& t, std::ostream* out) {
+  *out << t.title.toStdString();
+}
+}  // namespace drape
 
 namespace drape::test {
 

@@ -14,10 +14,20 @@ QLabel* MakeMessageLabel(QWidget* parent) {
   return label;
 }
 
+namespace {
+
+// The edit in the editor's words (the field and the value typed) beside the
+// reader's or the engine's message, which names the scene key.
+void Say(QLabel* message, const QString& what, const QString& problem) {
+  message->setText(problem.isEmpty() ? QString() : what + " — " + problem);
+}
+
+}  // namespace
+
 bool ApplyOrSay(SceneDocument* document, QLabel* message, const QString& what, const Scene& after) {
   QString problem;
   const bool done = document->tryApply(what, after, &problem);
-  message->setText(problem);
+  Say(message, what, problem);
   return done;
 }
 
@@ -27,7 +37,7 @@ bool ApplyOrSay(SceneDocument* document,
                 const nlohmann::json& scene_json) {
   QString problem;
   const bool done = document->tryApplyJson(what, scene_json, &problem);
-  message->setText(problem);
+  Say(message, what, problem);
   return done;
 }
 

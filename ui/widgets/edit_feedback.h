@@ -21,7 +21,8 @@ struct Scene;
 // A word-wrapped red label, empty until something is refused.
 QLabel* MakeMessageLabel(QWidget* parent);
 
-// `document`->tryApply; the reason (or nothing) goes into `message`.
+// `document`->tryApply; the reason (or nothing) goes into `message`, after
+// the edit's name: "thickness 0.5 mm — material.thickness: …".
 bool ApplyOrSay(SceneDocument* document, QLabel* message, const QString& what, const Scene& after);
 // The same for a scene's JSON form (SceneDocument::tryApplyJson).
 bool ApplyOrSay(SceneDocument* document,

@@ -118,7 +118,8 @@ bool FormEditor::place(const QString& at, const QString& turn, const QString& sc
   try {
     after = document_->parse(document);
   } catch (const std::exception& e) {
-    message_->setText(QString::fromStdString(e.what()));
+    const QString name = QString::fromStdString(document_->scene().obstacles[index_].name);
+    message_->setText("place " + name + " — " + QString::fromStdString(e.what()));
     Show();  // the fields show the form as it is
     return false;
   }

@@ -157,11 +157,12 @@ void ModelTree::refresh() {
   auto* stages = Add(root, "Stages", QString::number(s.stages.size()), Part::kStages);
   for (size_t i = 0; i < s.stages.size(); ++i) {
     const Stage& st = s.stages[i];
-    auto* stage = Add(stages,
-                      QString::fromStdString(st.name),
-                      QString("%1, Δλ₀ = %2").arg(ToString(st.kind)).arg(st.initial_increment),
-                      Part::kStages,
-                      static_cast<int>(i));
+    auto* stage =
+        Add(stages,
+            QString::fromStdString(st.name),
+            QString("%1, first step %2 %").arg(ToString(st.kind)).arg(100 * st.initial_increment),
+            Part::kStages,
+            static_cast<int>(i));
     for (size_t m = 0; m < st.moves.size(); ++m)
       Add(stage,
           QString::fromStdString(st.moves[m].gripper.empty() ? st.moves[m].obstacle
@@ -180,7 +181,9 @@ void ModelTree::refresh() {
         static_cast<int>(i));
   Add(root,
       "Solver",
-      QString("tolerance %1, N_p %2").arg(s.solver.tolerance).arg(s.solver.target_iterations),
+      QString("tolerance %1, %2 iterations per step")
+          .arg(s.solver.tolerance)
+          .arg(s.solver.target_iterations),
       Part::kSolver);
   expandAll();
 }

@@ -15,7 +15,7 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   auto* chart = new QChart;
   chart->legend()->setAlignment(Qt::AlignBottom);
   lambda_ = new QLineSeries;
-  lambda_->setName("λ of the stage");
+  lambda_->setName("share of the stage done (λ)");
   iterations_ = new QLineSeries;
   iterations_->setName("Newton iterations");
   limits_ = new QScatterSeries;
@@ -41,7 +41,7 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   steps_axis_->setTitleText("step");
   steps_axis_->setLabelFormat("%d");
   lambda_axis_ = new QValueAxis;
-  lambda_axis_->setTitleText("λ");
+  lambda_axis_->setTitleText("share done (λ)");
   lambda_axis_->setRange(0, 1);
   iterations_axis_ = new QValueAxis;
   iterations_axis_->setTitleText("iterations");

@@ -147,7 +147,8 @@ bool StagesPanel::setIncrement(double value) {
   if (refreshing_ || i < 0 || i >= static_cast<int>(after.stages.size())) return false;
   after.stages[i].initial_increment = value;
   return Apply(
-      QString("Δλ₀ of %1: %2").arg(QString::fromStdString(after.stages[i].name)).arg(value), after);
+      QString("first step of %1: %2").arg(QString::fromStdString(after.stages[i].name)).arg(value),
+      after);
 }
 
 bool StagesPanel::setControl(int index) {

@@ -6,9 +6,13 @@ namespace drape {
 
 nlohmann::json TypedQuantity(const QString& text) {
   bool number = false;
-  const double v = text.trimmed().toDouble(&number);
-  if (number) return v;
-  return text.trimmed().toStdString();
+  const QString trimmed = text.trimmed();
+  const double v = trimmed.toDouble(&number);
+  if (!number) return trimmed.toStdString();
+  // As JSON reads it where it can ("-1" stays an integer), so a message
+  // quotes the number as it was typed.
+  const auto as_json = nlohmann::json::parse(trimmed.toStdString(), nullptr, false);
+  return as_json.is_number() ? as_json : nlohmann::json(v);
 }
 
 nlohmann::json TypedList(const QString& text) {
