@@ -41,7 +41,7 @@ RunPlot::RunPlot(QWidget* parent) : QChartView(parent) {
   steps_axis_->setTitleText("step");
   steps_axis_->setLabelFormat("%d");
   lambda_axis_ = new QValueAxis;
-  lambda_axis_->setTitleText("share done (λ)");
+  lambda_axis_->setTitleText("λ");
   lambda_axis_->setRange(0, 1);
   iterations_axis_ = new QValueAxis;
   iterations_axis_->setTitleText("iterations");
