@@ -1,10 +1,15 @@
 #include "core/fe/textile_figures.h"
 
+#include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
+#include <utility>
 #include <variant>
 
 #include "core/fe/material_section.h"
 #include "core/model/overloaded.h"
+#include "core/model/string_format.h"
 
 namespace drape {
 namespace {
@@ -79,6 +84,18 @@ TextileFigures FiguresOf(const Material& m) {
 }
 
 Material MaterialFromSummary(const FabricSummary& s) {
+  const std::pair<double, const char*> figures[] = {
+      {s.thickness_mm, "the thickness T"},
+      {s.weight_g_per_m2, "the weight W"},
+      {s.bending_warp, "the warp's B"},
+      {s.bending_weft, "the weft's B"},
+      {s.shear, "the shear rigidity G"},
+      {s.tensile_warp, "the warp's stretch stiffness"},
+      {s.tensile_weft, "the weft's stretch stiffness"}};
+  for (const auto& [value, name] : figures)
+    if (!(value > 0) || !std::isfinite(value))
+      throw std::invalid_argument(std::string(name) + " must be greater than zero, found " +
+                                  Format("%g", value));
   Material m;
   m.thickness = s.thickness_mm * 1e-3;
   m.areal_weight = s.weight_g_per_m2 * 1e-3 * kStandardGravity;

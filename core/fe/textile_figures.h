@@ -46,7 +46,9 @@ struct FabricSummary {
 
 // The material of a summary: linear bending with B for warp and weft (one
 // law when they agree), an orthotropic membrane E = tensile / h, G₁₂ =
-// G / h (per radian). FiguresOf gives the summary back.
+// G / h (per radian). FiguresOf gives the summary back. Throws
+// std::invalid_argument naming the first figure that is not greater than
+// zero (ν₁₂ may be zero).
 Material MaterialFromSummary(const FabricSummary& summary);
 
 }  // namespace drape

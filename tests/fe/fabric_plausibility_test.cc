@@ -10,9 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
-#include "core/io/scene_reader.h"
+#include "core/io/library_fabric.h"
 #include "support/test_paths.h"
 
 namespace drape {
@@ -26,20 +24,9 @@ Material Plain(double thickness, double weight, double modulus) {
   return m;
 }
 
-// A library fabric as a scene reads it.
-Material FromLibrary(const std::string& name) {
-  nlohmann::json scene = nlohmann::json::parse(R"({
-    "drape_scene": 1,
-    "fabric": {"outline": {"rectangle": {"size": ["20 cm", "2 cm"]}}, "mesh": {"elements": [8, 1]}},
-    "stages": [{"name": "SW", "kind": "gravity"}]
-  })");
-  scene["material"] = {{"library", name}};
-  return SceneFromJson(scene, test::ScenesDir()).material;
-}
-
 TEST(FabricPlausibility, TheLibrarysFabricsPass) {
   for (const char* name : {"cotton-twill", "cotton-twill-linear", "polyester-plain-weave"})
-    EXPECT_TRUE(ImplausibleFabric(FromLibrary(name)).empty()) << name;
+    EXPECT_TRUE(ImplausibleFabric(LibraryFabric(name, test::ScenesDir())).empty()) << name;
 }
 
 TEST(FabricPlausibility, AThicknessReadInMetresIsNamedWithTheMillimetresMeant) {

@@ -10,21 +10,12 @@
 #include <numbers>
 #include <variant>
 
+#include "support/fabric_summaries.h"
+
 namespace drape {
 namespace {
 
-FabricSummary Shirting() {
-  FabricSummary s;
-  s.thickness_mm = 0.5;
-  s.weight_g_per_m2 = 150;
-  s.bending_warp = 0.08;
-  s.bending_weft = 0.05;
-  s.shear = 0.8;
-  s.tensile_warp = 400;
-  s.tensile_weft = 250;
-  s.poisson_ratio = 0.3;
-  return s;
-}
+using test::Shirting;
 
 TEST(TextileFigures, ASummaryBecomesTheMaterialInSI) {
   const Material m = MaterialFromSummary(Shirting());
@@ -56,6 +47,19 @@ TEST(TextileFigures, TheMaterialsFiguresAreTheSummaryAgain) {
   FabricSummary same = s;
   same.bending_weft = same.bending_warp;
   EXPECT_FALSE(MaterialFromSummary(same).bending.weft.has_value());
+}
+
+// A figure a fabric always has, given as zero, is named rather than made
+// into an infinite modulus.
+TEST(TextileFigures, ASummaryWithAZeroFigureIsRefusedByName) {
+  FabricSummary s = Shirting();
+  s.shear = 0;
+  try {
+    MaterialFromSummary(s);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "the shear rigidity G must be greater than zero, found 0");
+  }
 }
 
 // The paper's fit M = Σ cₖ Kᵏ (gf·cm/cm, K in 1/cm): B between 0.5 and 1.5 1/cm.

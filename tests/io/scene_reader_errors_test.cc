@@ -24,6 +24,7 @@
 
 #include "core/io/scene_reader.h"
 #include "core/model/scene_error.h"
+#include "support/minimal_scene.h"
 #include "support/temp_dir.h"
 #include "support/test_paths.h"
 
@@ -32,16 +33,8 @@ namespace {
 
 using nlohmann::json;
 
-// A 20 × 2 cm strip clamped at its left edge, hanging under its weight.
 json Minimal() {
-  return json::parse(R"({
-    "drape_scene": 1,
-    "fabric": {"outline": {"rectangle": {"size": ["20 cm", "2 cm"]}}, "mesh": {"elements": [8, 1]}},
-    "material": {"thickness": "0.5 mm", "areal_weight": 2.0, "youngs_modulus": "1 MPa",
-                 "poisson_ratio": 0.3},
-    "supports": [{"name": "root", "select": {"edge": "left"}, "fix": "clamp"}],
-    "stages": [{"name": "SW", "kind": "gravity"}]
-  })");
+  return test::MinimalSceneJson();
 }
 
 // A gripper 'hand' holding the strip's right edge.

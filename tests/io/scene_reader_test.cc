@@ -10,6 +10,7 @@
 
 #include "core/io/scene_writer.h"
 #include "core/model/scene_error.h"
+#include "support/minimal_scene.h"
 #include "support/test_paths.h"
 
 namespace drape {
@@ -22,14 +23,7 @@ constexpr double kOzf = 0.028349523125 * 9.80665;  // N, ounce-force (avoirdupoi
 constexpr double kInch = 0.0254;                   // m
 
 json Minimal() {
-  return json::parse(R"({
-    "drape_scene": 1,
-    "fabric": {"outline": {"rectangle": {"size": ["20 cm", "2 cm"]}}, "mesh": {"elements": [8, 1]}},
-    "material": {"thickness": "0.5 mm", "areal_weight": 2.0, "youngs_modulus": "1 MPa",
-                 "poisson_ratio": 0.3},
-    "supports": [{"name": "root", "select": {"edge": "left"}, "fix": "clamp"}],
-    "stages": [{"name": "SW", "kind": "gravity"}]
-  })");
+  return test::MinimalSceneJson();
 }
 
 // The message of the SceneError that parsing `doc` throws.

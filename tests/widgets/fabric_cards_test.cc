@@ -14,6 +14,7 @@
 #include <numbers>
 #include <variant>
 
+#include "support/fabric_summaries.h"
 #include "ui/widgets/fabric_cards.h"
 #include "ui/widgets/fabric_summary_form.h"
 #include "ui/widgets/main_window.h"
@@ -45,18 +46,9 @@ TEST_F(Widgets, LibraryCardsAndALabSummaryInTextileTerms) {
   EXPECT_TRUE(card.contains("266 g/m²") || card.contains("267 g/m²")) << card.toStdString();
   EXPECT_TRUE(card.contains("0.489 mm")) << card.toStdString();
 
-  // A shirting from its summary: T 0.5 mm, W 150 g/m², B 0.08/0.05, G 0.8,
-  // 400/250 gf/cm per width.
+  // A shirting from its summary (support/fabric_summaries.h).
   FabricSummaryForm* form = dialog.labSummary();
-  FabricSummary s;
-  s.thickness_mm = 0.5;
-  s.weight_g_per_m2 = 150;
-  s.bending_warp = 0.08;
-  s.bending_weft = 0.05;
-  s.shear = 0.8;
-  s.tensile_warp = 400;
-  s.tensile_weft = 250;
-  s.poisson_ratio = 0.3;
+  FabricSummary s = test::Shirting();
   form->setSummary(s);
   const Scene before = window.document()->scene();
   ASSERT_TRUE(form->apply()) << form->message().toStdString();
@@ -73,6 +65,8 @@ TEST_F(Widgets, LibraryCardsAndALabSummaryInTextileTerms) {
   s.shear = 0;
   form->setSummary(s);
   EXPECT_FALSE(form->apply());
+  EXPECT_EQ(form->message().toStdString(),
+            "the shear rigidity G must be greater than zero, found 0");
   EXPECT_EQ(window.document()->scene(), before);
 }
 

@@ -6,6 +6,8 @@
 // files it writes read back. Runs under xvfb-run -a.
 #include <gtest/gtest.h>
 
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
 #include <QAction>
 #include <QDir>
 #include <QFile>
@@ -23,14 +25,17 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/test_paths.h"
+#include "ui/render/frame_renderer.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/material_dialog.h"
 #include "ui/widgets/pattern_import_dialog.h"
 #include "ui/widgets/scene_document.h"
 #include "ui/widgets/scene_templates.h"
+#include "ui/widgets/view_controller.h"
 #include "ui/widgets/workbench_actions.h"
 #include "widgets/gui_test.h"
 
@@ -298,9 +303,22 @@ TEST_F(Menus, EditViewRunAndHelpActionsDoWhatTheySay) {
   EXPECT_EQ(window_->currentStep(), steps);
   Action("view.previous")->trigger();
   EXPECT_EQ(window_->currentStep(), steps - 1);
-  for (const char* camera :
-       {"view.camera_iso", "view.camera_front", "view.camera_top", "view.camera_side"})
-    Action(camera)->trigger();  // the camera fitted again: nothing to count but no failure
+  // Each camera action puts the camera on its own side of the part, as
+  // `drape render --camera` does: front on −y, side on +x, top on +z, iso
+  // along (1, −1, 0.8).
+  const std::pair<const char*, Eigen::Vector3d> cameras[] = {
+      {"view.camera_front", {0, -1, 0}},
+      {"view.camera_side", {1, 0, 0}},
+      {"view.camera_top", {0, 0, 1}},
+      {"view.camera_iso", Eigen::Vector3d(1, -1, 0.8).normalized()}};
+  for (const auto& [name, from] : cameras) {
+    Action(name)->trigger();
+    vtkCamera* camera = window_->view()->renderer()->renderer()->GetActiveCamera();
+    Eigen::Vector3d position, focus;
+    camera->GetPosition(position.data());
+    camera->GetFocalPoint(focus.data());
+    EXPECT_LT(((position - focus).normalized() - from).norm(), 1e-9) << name;
+  }
 
   // Pause, Step and Stop while a run goes on: paused it takes one step at a
   // time; stopped it keeps the steps it has.

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include <exception>
+#include <stdexcept>
 
 #include "core/model/scene.h"
 #include "ui/widgets/edit_feedback.h"
@@ -113,15 +114,14 @@ void FabricSummaryForm::showScene() {
 }
 
 bool FabricSummaryForm::apply() {
-  const FabricSummary s = summary();
-  if (s.thickness_mm <= 0 || s.tensile_warp <= 0 || s.tensile_weft <= 0 || s.shear <= 0 ||
-      s.bending_warp <= 0 || s.bending_weft <= 0) {
-    message_->setText("thickness, B, G and the stretch stiffnesses must each be greater than zero");
-    return false;
-  }
   Scene after = document_->scene();
   const Material before = after.material;
-  after.material = MaterialFromSummary(s);
+  try {
+    after.material = MaterialFromSummary(summary());
+  } catch (const std::invalid_argument& e) {
+    message_->setText(QString::fromStdString(e.what()));
+    return false;
+  }
   after.material.angle_deg = before.angle_deg;
   after.material.angle_from_grain = before.angle_from_grain;
   return ApplyOrSay(document_, message_, "fabric from a lab summary", after);
