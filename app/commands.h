@@ -32,6 +32,8 @@ void AddDragCommand(CLI::App& app, CommandRunner& runner);
 void AddMeasureCommand(CLI::App& app, CommandRunner& runner);
 // Adds `study STUDY -o DIR [--jobs N] [--emit slurm|parallel]` and `study DIR --collect`.
 void AddStudyCommand(CLI::App& app, CommandRunner& runner);
+// Adds `plan PLAN -o DIR [--jobs N] [--emit slurm|parallel]`.
+void AddPlanCommand(CLI::App& app, CommandRunner& runner);
 // Adds `material fit FILE …` and `material list`.
 void AddMaterialCommand(CLI::App& app, CommandRunner& runner);
 // Adds `pattern list FILE [--json]`: the pieces of a DXF-AAMA pattern file.

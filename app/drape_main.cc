@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   drape::app::AddMeasureCommand(app, runner);
   drape::app::AddPatternCommand(app, runner);
   drape::app::AddStudyCommand(app, runner);
+  drape::app::AddPlanCommand(app, runner);
   // Its DXF outline needs no VTK; its surfaces run in drape-vtk.
   drape::app::AddExportCommand(app, runner);
 #if defined(DRAPE_WITH_RENDER) || defined(DRAPE_RENDER_PROGRAM)

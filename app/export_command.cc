@@ -16,8 +16,11 @@
 #include "app/render_program.h"
 #include "app/run_input.h"
 #include "core/io/dxf_pattern_writer.h"
+#include "core/io/result_reader.h"
 #include "core/model/mesh_boundary.h"
 #include "core/model/scene_error.h"
+#include "core/model/units.h"
+#include "core/plan/gripper_trajectory.h"
 #ifdef DRAPE_WITH_RENDER
 #include "ui/render/surface_export.h"
 #endif
@@ -28,7 +31,36 @@ namespace {
 struct ExportArgs {
   std::string input, output, format = "vtu", step = "all";
   bool solid = false;
+  std::string speed = "0.1 m/s";
 };
+
+// DIR/trajectory.csv: each gripper's pose, time and force per step, for a
+// robot cell (docs/plan.md "Trajectory").
+int RunTrajectoryExport(const ExportArgs& args) {
+  try {
+    double speed = 0;
+    try {
+      speed = ParseQuantityAs(args.speed, Dimension{1, 0, -1, 0});  // m/s
+    } catch (const UnitError& e) {
+      throw std::invalid_argument("--speed: " + std::string(e.what()));
+    }
+    if (!(speed > 0))
+      throw std::invalid_argument("--speed: must be greater than zero, found " + args.speed);
+    const RunRecord record = ReadRunRecord(args.input);
+    if (record.scene.grippers.empty())
+      throw std::invalid_argument(args.input + ": the scene has no gripper to export");
+    std::filesystem::create_directories(args.output);
+    const std::filesystem::path file = std::filesystem::path(args.output) / "trajectory.csv";
+    const auto points = GripperTrajectory(record, speed);
+    WriteTrajectoryCsv(record, points, file);
+    std::cerr << "  " << points.size() << " steps of " << record.scene.grippers.size() << " gripper"
+              << (record.scene.grippers.size() == 1 ? "" : "s") << " in " << file.string() << "\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "drape export: " << e.what() << "\n";
+  }
+  return 1;
+}
 
 // The outline of each step asked for, one DXF-AAMA file each
 // (outline-step-N.dxf): a pattern piece keeps its name and its notches
@@ -83,11 +115,13 @@ int RunOutlineExport(const ExportArgs& args) {
 // VTK writes the surfaces: that command runs in drape-vtk.
 int RunExport(const ExportArgs& args) {
   if (args.format == "dxf") return RunOutlineExport(args);
+  if (args.format == "trajectory") return RunTrajectoryExport(args);
   return RunInRenderProgram("export");
 }
 #else
 int RunExport(const ExportArgs& args) {
   if (args.format == "dxf") return RunOutlineExport(args);
+  if (args.format == "trajectory") return RunTrajectoryExport(args);
   try {
     const RunInput run = ReadRunInput(args.input);
     const SurfaceFormat format = args.format == "vtu"   ? SurfaceFormat::kVtu
@@ -126,11 +160,16 @@ void AddExportCommand(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("-o,--output", args->output, "Folder to write into")->required();
   cmd->add_option("--format",
                   args->format,
-                  "vtu (with run.pvd), obj, ply, stl, csv, or dxf (the outline on the table, "
-                  "DXF-AAMA in mm)")
-      ->check(CLI::IsMember({"vtu", "obj", "ply", "stl", "csv", "dxf"}))
+                  "vtu (with run.pvd), obj, ply, stl, csv, dxf (the outline on the table, "
+                  "DXF-AAMA in mm), or trajectory (each gripper's pose, time and force per "
+                  "step: DIR/trajectory.csv)")
+      ->check(CLI::IsMember({"vtu", "obj", "ply", "stl", "csv", "dxf", "trajectory"}))
       ->capture_default_str();
   cmd->add_option("--step", args->step, "Step number, 0 for the reference, 'last' or 'all'")
+      ->capture_default_str();
+  cmd->add_option("--speed",
+                  args->speed,
+                  "trajectory: the speed of the fastest gripper along its path, e.g. \"5 cm/s\"")
       ->capture_default_str();
   cmd->add_flag("--solid",
                 args->solid,

@@ -26,12 +26,11 @@
 #include <thread>
 #include <vector>
 
+#include "app/child_process.h"
 #include "app/commands.h"
 #include "core/io/study_file.h"
 #include "core/io/study_table.h"
 #include "core/model/scene_error.h"
-
-extern char** environ;
 
 namespace drape::app {
 namespace {
@@ -51,19 +50,6 @@ struct StudyArgs {
 std::atomic<bool> g_interrupted{false};
 extern "C" void OnStudyInterrupt(int) {
   g_interrupted = true;
-}
-
-// This program, to start the runs with. A rebuild or reinstall while a
-// study goes on replaces the file: Linux then names the old one
-// "… (deleted)", and the runs start the new one at the same path.
-fs::path SelfExecutable() {
-  std::error_code ec;
-  std::string self = fs::read_symlink("/proc/self/exe", ec).string();
-  if (ec) return "drape";
-  const std::string deleted = " (deleted)";
-  if (self.size() > deleted.size() && self.ends_with(deleted))
-    self.resize(self.size() - deleted.size());
-  return self;
 }
 
 // The study kept in its folder, its scene path made absolute, so that
@@ -99,12 +85,6 @@ void WriteRunScenes(const Study& study, const fs::path& dir) {
     fs::remove_all(RunResultFolder(dir, run.name));
     std::ofstream(file) << text;
   }
-}
-
-std::string ShellQuoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 std::vector<std::string> RunArguments(const Study& study,
@@ -193,33 +173,6 @@ struct Child {
   std::string name;
   Clock::time_point start;
 };
-
-pid_t Spawn(const std::vector<std::string>& args, const fs::path& log) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = -1;
-  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return error == 0 ? pid : -1;
-}
-
-std::string Duration(double seconds) {
-  char text[40];
-  if (seconds < 10)
-    std::snprintf(text, sizeof text, "%.1f s", seconds);
-  else if (seconds < 120)
-    std::snprintf(text, sizeof text, "%.0f s", seconds);
-  else if (seconds < 7200)
-    std::snprintf(text, sizeof text, "%.0f min", seconds / 60);
-  else
-    std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
-  return text;
-}
 
 // Runs the pending runs, `jobs` at a time; false when interrupted.
 bool RunPending(const Study& study, const fs::path& dir, int jobs, bool quiet) {

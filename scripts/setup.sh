@@ -16,6 +16,8 @@ DRAPE_PACKAGES=(
   # pattern pieces from apparel CAD (AAMA DXF), and the independent DXF
   # writer the reader's tests check it against
   libdxflib-dev python3-ezdxf
+  # plans: the derivative-free searches for a fold path (NLopt's BOBYQA, COBYLA)
+  libnlopt-cxx-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # rendering (ui/render): VTK through X; ffmpeg encodes MP4/GIF (and its

@@ -31,6 +31,9 @@ class SceneParser {
   explicit SceneParser(std::filesystem::path base) : base_(std::move(base)) {}
 
   Scene Read(const JsonCursor& root);
+  // A selection outside a scene document (a plan's region), with `scene`'s
+  // parts for its `part`.
+  Selection ReadSelectionFor(const JsonCursor& c, const Scene& scene);
 
  private:
   Fabric ReadFabric(const JsonCursor& c);

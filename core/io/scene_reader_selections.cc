@@ -1,6 +1,7 @@
 // Reading what a scene holds and loads the fabric by: the selections of
 // nodes, and the supports, grippers and point loads made of them.
 #include "core/io/scene_parser.h"
+#include "core/io/selection_reader.h"
 
 namespace drape {
 namespace {
@@ -16,6 +17,17 @@ std::string PointAsTyped(const JsonCursor& c) {
 }
 
 }  // namespace
+
+Selection SceneParser::ReadSelectionFor(const JsonCursor& c, const Scene& scene) {
+  parts_ = FabricParts(scene);
+  Selection s = ReadSelection(c);
+  parts_.clear();
+  return s;
+}
+
+Selection ReadSelection(const nlohmann::json& value, const std::string& path, const Scene& scene) {
+  return SceneParser(".").ReadSelectionFor(JsonCursor(value, path), scene);
+}
 
 Selection SceneParser::ReadSelection(const JsonCursor& c) {
   c.ExpectObject({"point",

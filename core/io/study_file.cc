@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/io/json_cursor.h"
+#include "core/io/scene_key.h"
 #include "core/io/scene_reader.h"
 #include "core/model/scene_error.h"
 
@@ -30,86 +31,6 @@ std::string ReadText(const fs::path& file, const std::string& what) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
-}
-
-// `stages[1].initial_increment` → ("stages", {1}), ("initial_increment", {}).
-struct PathStep {
-  std::string name;
-  std::vector<size_t> indices;
-};
-
-std::vector<PathStep> ParsePath(const std::string& key, const std::string& where) {
-  std::vector<PathStep> steps;
-  size_t at = 0;
-  auto fail = [&](const std::string& why) {
-    throw SceneError(where,
-                     "'" + key + "' is not a scene key path (" + why +
-                         "); write it as in fabric.mesh.elements or "
-                         "stages[1].initial_increment");
-  };
-  while (at <= key.size()) {
-    const size_t end = std::min(key.find('.', at), key.size());
-    const std::string token = key.substr(at, end - at);
-    const size_t bracket = token.find('[');
-    PathStep step{token.substr(0, bracket), {}};
-    if (step.name.empty()) fail("an empty name");
-    for (size_t b = bracket; b != std::string::npos;) {
-      const size_t close = token.find(']', b);
-      if (close == std::string::npos || close == b + 1) fail("an index without its number");
-      const std::string digits = token.substr(b + 1, close - b - 1);
-      if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6)
-        fail("index '" + digits + "' is not a whole number");
-      step.indices.push_back(std::stoul(digits));
-      b = close + 1 < token.size() ? close + 1 : std::string::npos;
-      if (b != std::string::npos && token[b] != '[') fail("text after an index");
-    }
-    steps.push_back(std::move(step));
-    at = end + 1;
-  }
-  return steps;
-}
-
-// Sets `key` in the scene document; members missing along the way are made
-// (an absent `solver` object), array elements must exist.
-void Set(ordered_json& scene, const std::string& key, const json& value, const std::string& where) {
-  ordered_json* node = &scene;
-  std::string reached;
-  for (const PathStep& step : ParsePath(key, where)) {
-    if (node->is_null()) *node = ordered_json::object();
-    if (!node->is_object())
-      throw SceneError(where,
-                       "'" + key + "': the scene's " + (reached.empty() ? "document" : reached) +
-                           " is not an object");
-    reached += (reached.empty() ? "" : ".") + step.name;
-    node = &(*node)[step.name];
-    for (size_t i : step.indices) {
-      reached.append("[").append(std::to_string(i)).append("]");
-      if (!node->is_array() || i >= node->size())
-        throw SceneError(
-            where,
-            "'" + key + "': the scene has no " + reached +
-                (node->is_array() ? " (it has " + std::to_string(node->size()) + ")" : ""));
-      node = &(*node)[i];
-    }
-  }
-  *node = value;
-}
-
-// Relative `file` references are relative to the scene's folder: made
-// absolute, the generated scene reads from its run's folder.
-void AbsoluteFiles(ordered_json& node, const fs::path& scene_dir) {
-  if (node.is_object()) {
-    for (auto it = node.begin(); it != node.end(); ++it) {
-      if (it.key() == "file" && it.value().is_string()) {
-        const fs::path p = it.value().get<std::string>();
-        if (p.is_relative()) it.value() = (scene_dir / p).lexically_normal().string();
-      } else {
-        AbsoluteFiles(it.value(), scene_dir);
-      }
-    }
-  } else if (node.is_array()) {
-    for (auto& element : node) AbsoluteFiles(element, scene_dir);
-  }
 }
 
 // `ordered` is the same object as `settings` read with its keys in the
@@ -192,8 +113,8 @@ std::string SceneTextOf(const Study& study, const StudyRun& run) {
   } catch (const json::parse_error& e) {
     throw SceneError("scene", study.scene_file.string() + " is not valid JSON: " + e.what());
   }
-  for (const StudySetting& s : run.settings) Set(scene, s.key, json::parse(s.value), "");
-  AbsoluteFiles(scene, study.scene_file.parent_path());
+  for (const StudySetting& s : run.settings) SetSceneKey(scene, s.key, json::parse(s.value), "");
+  MakeFilesAbsolute(scene, study.scene_file.parent_path());
   return scene.dump(2);
 }
 

@@ -1,0 +1,172 @@
+// `drape plan` on the strip fold (resources/scenes/strip-fold.json, under a
+// second a run): a plan file refused naming its key; one search whose
+// table, best scene and best result are checked against the fold's
+// kinematics; a run that fails is a penalised row, not the end; Ctrl-C
+// keeps what finished and a rerun resumes without running it again. The
+// whole recovery of the shipped plan is in plan_cli_slow_test.cc.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/csv_file.h"
+#include "support/drape_command.h"
+#include "support/test_paths.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test::Column;
+using test::ReadCsv;
+using test::ReadText;
+
+// Where the shipped fold lands its gripped end: x₀ = (−10 cm, 0, 0) turned
+// by 180° about the axis through (0, 0, c), c = 0.035175 cm, is
+// (10 cm, 0, 2c); stage T then moves it 1 cm along x.
+constexpr double kLandingX = 0.11, kLandingZ = 2 * 0.035175e-2;
+
+class PlanCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("drape-plan-cli-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  // A plan of the arc's angle alone, in [lo, hi] from `start`.
+  fs::path WritePlan(double lo, double hi, double start, int evaluations) {
+    const fs::path file = dir_ / "plan.json";
+    std::ofstream(file) << R"({"drape_plan": 1, "scene": ")"
+                        << (test::ScenesDir() / "strip-fold.json").string() << R"(",
+      "parameters": [{"key": "stages[1].moves[0].path.arc.angle_deg", "min": )"
+                        << lo << ", \"max\": " << hi << ", \"start\": " << start << R"(}],
+      "objective": {"probes": [{"probe": "end", "target": ["11 cm", 0, "0.07035 cm"]}]},
+      "optimizer": {"max_evaluations": )"
+                        << evaluations << "}}";
+    return file;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(PlanCli, APlanFileErrorNamesTheKeyAndRunsNothing) {
+  const fs::path file = dir_ / "bad.json";
+  std::ofstream(file) << R"({"drape_plan": 1, "scene": ")"
+                      << (test::ScenesDir() / "strip-fold.json").string() << R"(",
+      "parameters": [{"key": "stages[1].moves[0].path.arc.angle_deg", "min": 170, "max": 190}],
+      "objective": {"probes": [{"probe": "tip", "target": [0, 0, 0]}]}})";
+  const test::CommandResult r =
+      test::RunDrape("plan '" + file.string() + "' -o '" + (dir_ / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.output,
+            "drape plan: " + file.string() +
+                ": objective.probes[0].probe: the scene has no probe 'tip' (it has end, "
+                "fold)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "evals"));
+}
+
+// The first evaluation is the shipped fold itself; the search's second step
+// (a fifth of the range up, 186°) drives the end into the table and fails.
+TEST_F(PlanCli, ATableOfEveryEvaluationTheBestKeptAndAFailurePenalised) {
+  const fs::path out = dir_ / "out";
+  const test::CommandResult r = test::RunDrape("plan '" + WritePlan(170, 200, 180, 5).string() +
+                                               "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows = ReadCsv(out / "plan.csv");
+  ASSERT_GE(rows.size(), 3u);
+  const auto& header = rows[0];
+  const size_t status = Column(header, "status"), distance = Column(header, "end_distance_m"),
+               length = Column(header, "path_length_m"), value = Column(header, "search_value_m"),
+               angle = Column(header, "stages[1].moves[0].path.arc.angle_deg");
+  EXPECT_EQ(rows[1][angle], "180");
+  EXPECT_EQ(rows[1][status], "converged");
+  EXPECT_LT(std::stod(rows[1][distance]), 1e-9);
+  // The end's path: a half circle of radius √(0.1² + c²) and stage T's 1 cm,
+  // measured as chords between steps (short of the arc by under 1e-3).
+  const double arc = M_PI * std::hypot(0.1, 0.035175e-2) + 0.01;
+  EXPECT_NEAR(std::stod(rows[1][length]), arc, 1e-3 * arc);
+  int failed = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    for (const std::string& cell : rows[i]) EXPECT_EQ(cell.find("nan"), std::string::npos);
+    if (rows[i][status] != "failed") continue;
+    ++failed;
+    EXPECT_EQ(rows[i][Column(header, "feasible")], "no");
+    EXPECT_EQ(rows[i][Column(header, "objective_m")], "");
+    // Above the worst feasible objective before it by 0.1 × the diagonal × 3.
+    double worst = 0;
+    for (size_t j = 1; j < i; ++j)
+      if (rows[j][Column(header, "feasible")] == "yes")
+        worst = std::max(worst, std::stod(rows[j][distance]));
+    EXPECT_NEAR(std::stod(rows[i][value]), worst + 0.3 * std::hypot(0.2, 0.02), 1e-8);
+  }
+  EXPECT_GE(failed, 1) << ReadText(out / "plan.csv");
+  // The best: its scene and result, the end where the fold puts it.
+  const json best = json::parse(ReadText(out / "best" / "result" / "result.json"));
+  EXPECT_EQ(best["status"], "converged");
+  const auto end = best["final"]["probes"]["end"];
+  EXPECT_NEAR(end[0].get<double>(), kLandingX, 1e-9);
+  EXPECT_NEAR(end[2].get<double>(), kLandingZ, 1e-9);
+  for (const json& step : best["steps"]) EXPECT_EQ(step["negative_pivots"], 0);
+  EXPECT_TRUE(fs::is_regular_file(out / "best" / "scene.json"));
+  EXPECT_NE(r.output.find("best: objective "), std::string::npos) << r.output;
+}
+
+// Ctrl-C after the second evaluation: exit 130, the table holds what
+// finished; the rerun takes those from their folders and completes.
+TEST_F(PlanCli, CtrlCKeepsTheBestAndARerunResumes) {
+  const fs::path out = dir_ / "out";
+  const std::string command = std::string(test::DrapeCli()) + " plan '" +
+                              WritePlan(170, 180, 172, 6).string() + "' -o '" + out.string() + "'";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " > /dev/null 2>&1").c_str(), nullptr);
+    _exit(127);
+  }
+  const fs::path second = out / "evals" / "s1-e0002" / "result" / "result.json";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fs::exists(second) && ReadText(second).find("\"status\": \"running\"") == std::string::npos)
+      break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  // Wait for the table to hold it, then interrupt the whole group.
+  while (std::chrono::steady_clock::now() < deadline && ReadCsv(out / "plan.csv").size() < 3)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(-pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const auto first = ReadCsv(out / "plan.csv");
+  ASSERT_GE(first.size(), 3u);
+  EXPECT_TRUE(fs::is_regular_file(out / "best" / "scene.json"));
+  const auto kept = fs::last_write_time(out / "evals" / "s1-e0001" / "result" / "result.json");
+
+  const test::CommandResult rerun =
+      test::RunDrape("plan '" + (out / "plan.json").string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.output;
+  EXPECT_EQ(fs::last_write_time(out / "evals" / "s1-e0001" / "result" / "result.json"), kept);
+  const auto second_table = ReadCsv(out / "plan.csv");
+  ASSERT_GE(second_table.size(), first.size());
+  // The replayed evaluations are the same points with the same answers.
+  for (size_t i = 1; i < 3; ++i) EXPECT_EQ(second_table[i], first[i]);
+}
+
+}  // namespace
+}  // namespace drape
