@@ -37,8 +37,8 @@ struct SharedSearch {
 };
 
 struct OneSearch {
-  SharedSearch* shared;
-  int start;
+  SharedSearch* shared = nullptr;
+  int start = 0;
   int count = 0;
   std::optional<double> worst_feasible;  // this search's own, so a rerun sees the same
   nlopt::opt* opt = nullptr;
@@ -47,6 +47,7 @@ struct OneSearch {
   std::vector<double> last_x;
   EvaluationOutcome last;
   double last_value = 0;
+  std::string error;  // why an evaluation could not be made (the search stops)
 };
 
 std::vector<double> Physical(const Plan& plan, const std::vector<double>& u) {
@@ -64,7 +65,14 @@ const EvaluationOutcome& OutcomeAt(OneSearch& s, const std::vector<double>& u) {
   if (shared.options.stop && shared.options.stop->load()) throw nlopt::forced_stop();
   const std::vector<double> x = Physical(shared.plan, u);
   ++s.count;
-  s.last = shared.evaluate(s.start, s.count, x);
+  try {
+    s.last = shared.evaluate(s.start, s.count, x);
+  } catch (const std::exception& e) {
+    // Not a failed run but no run at all (the program cannot be started):
+    // every further point would be the same.
+    s.error = e.what();
+    throw nlopt::forced_stop();
+  }
   s.last_x = u;
   PlanEvaluation e{
       s.start, s.count, x, s.last, PenalisedValue(s.last, shared.scale, s.worst_feasible)};
@@ -125,7 +133,9 @@ void Search(SharedSearch& shared, int start, const std::vector<double>& x0, int 
   const size_t n = plan.parameters.size();
   const bool cobyla = plan.search.algorithm == PlanAlgorithm::kCobyla;
   nlopt::opt opt(cobyla ? nlopt::LN_COBYLA : nlopt::LN_BOBYQA, static_cast<unsigned>(n));
-  OneSearch s{&shared, start};
+  OneSearch s;
+  s.shared = &shared;
+  s.start = start;
   s.opt = &opt;
   opt.set_lower_bounds(std::vector<double>(n, 0.0));
   opt.set_upper_bounds(std::vector<double>(n, 1.0));
@@ -152,7 +162,7 @@ void Search(SharedSearch& shared, int start, const std::vector<double>& x0, int 
   try {
     reason = ResultText(opt.optimize(u, value));
   } catch (const nlopt::forced_stop&) {
-    reason = "interrupted";
+    reason = s.error.empty() ? "interrupted" : "stopped: " + s.error;
   } catch (const nlopt::roundoff_limited&) {
     reason = "the search was limited by round-off";
   } catch (const std::exception& e) {

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -145,6 +146,24 @@ TEST(PlanSearch, AStopEndsEverySearchAfterItsEvaluation) {
   // The two searches each finish the evaluation they were in.
   EXPECT_GE(summary.evaluations.size(), 3u);
   EXPECT_LE(summary.evaluations.size(), 4u);
+}
+
+// No run at all (the program cannot be started) is not a failed run: the
+// search stops and says why.
+TEST(PlanSearch, AnEvaluationThatCannotBeMadeStopsTheSearchSayingWhy) {
+  const Plan plan = RecoveryPlan(PlanAlgorithm::kCobyla);
+  int calls = 0;
+  const PlanSearchSummary summary =
+      RunPlanSearch(plan,
+                    [&](int, int, const std::vector<double>& x) {
+                      if (++calls == 3) throw std::runtime_error("cannot start /nowhere/drape");
+                      return DistanceFrom(0, 180, x);
+                    },
+                    nullptr,
+                    {});
+  EXPECT_EQ(summary.evaluations.size(), 2u);
+  EXPECT_EQ(summary.stop_reason, "stopped: cannot start /nowhere/drape");
+  EXPECT_FALSE(summary.interrupted);
 }
 
 TEST(PlanSearch, StartingPointsBeginAtThePlansStartAndStayInBounds) {
