@@ -161,9 +161,23 @@ void CheckObstacleName(const JsonCursor& c, const Scene& scene) {
 }
 
 FlatTerm ReadFlat(const JsonCursor& c, const Scene& scene) {
-  c.ExpectObject({"select", "on", "layer", "share", "weight"});
+  c.ExpectObject({"select", "side", "on", "layer", "share", "weight"});
   FlatTerm f;
-  f.select = ReadSelection(c["select"].value(), c["select"].path(), scene);
+  if (c.OneOf({"select", "side"}) == 0) {
+    f.select = ReadSelection(c["select"].value(), c["select"].path(), scene);
+  } else {
+    const JsonCursor side = c["side"];
+    side.ExpectObject({"line", "toward"});
+    const auto ends = side["line"].Items(2);
+    SideOfLine s{ends[0].QuantityVec2(dim::kLength),
+                 ends[1].QuantityVec2(dim::kLength),
+                 side["toward"].QuantityVec2(dim::kLength)};
+    if (s.from == s.to) side["line"].Fail("the line's two points must differ");
+    const double cross = (s.to[0] - s.from[0]) * (s.toward[1] - s.from[1]) -
+                         (s.to[1] - s.from[1]) * (s.toward[0] - s.from[0]);
+    if (cross == 0) side["toward"].Fail("lies on the line: it must name a side of it");
+    f.side = s;
+  }
   CheckObstacleName(c["on"], scene);
   f.on = c["on"].String();
   if (auto l = c.Find("layer")) {

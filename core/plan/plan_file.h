@@ -35,8 +35,16 @@ struct ProbeTarget {
 // distance from it within the thickness of `layer` layers
 // ((layer − ½) h to the mid-surface). The term is the gap beyond that
 // which `share` of the region's nodes stay within (1: the largest) [m].
+// The nodes on one side of a line in the reference plane, the line's own
+// included: a half folded over a diagonal, which no selection rule picks.
+struct SideOfLine {
+  Vec2 from{0, 0}, to{0, 0};  // the line [m]
+  Vec2 toward{0, 0};          // a point on the side wanted [m]
+};
+
 struct FlatTerm {
-  Selection select;
+  std::optional<Selection> select;  // one of select and side
+  std::optional<SideOfLine> side;
   std::string on;  // an obstacle's name
   int layer = 1;
   double share = 1;

@@ -90,12 +90,32 @@ void MeasureGrippers(const Plan& plan,
   }
 }
 
+// Reference coordinates: z = 0 is the pattern's plane (an elevated
+// fabric keeps its x and y). A node within 1e-9 of the diagonal's length
+// of the line belongs to both sides.
+std::vector<int> NodesOnSide(const SideOfLine& side, const Mesh& mesh) {
+  const Eigen::Vector2d a(side.from[0], side.from[1]), b(side.to[0], side.to[1]),
+      t(side.toward[0], side.toward[1]);
+  auto cross = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector2d u = b - a, v = p - a;
+    return u.x() * v.y() - u.y() * v.x();
+  };
+  const double sign = cross(t) > 0 ? 1 : -1, slack = 1e-9 * (b - a).squaredNorm();
+  std::vector<int> nodes;
+  for (int n = 0; n < mesh.NodeCount(); ++n)
+    if (sign * cross(Eigen::Vector2d(mesh.positions(n, 0), mesh.positions(n, 1))) >= -slack)
+      nodes.push_back(n);
+  return nodes;
+}
+
 // The gap beyond the layers' thickness that `share` of the region stays within.
 double FlatGap(const Plan& plan,
                const RunRecord& record,
                const std::vector<std::unique_ptr<ObstacleGeometry>>& obstacles) {
   const FlatTerm& flat = *plan.objective.flat;
-  const std::vector<int> nodes = SelectNodesInParts(flat.select, record.scene, record.mesh);
+  const std::vector<int> nodes = flat.select
+                                     ? SelectNodesInParts(*flat.select, record.scene, record.mesh)
+                                     : NodesOnSide(*flat.side, record.mesh);
   const size_t o = ObstacleIndex(record.scene, flat.on);
   const size_t last = record.states.size() - 1;
   const ObstaclePlacement place = PlacementAt(record, last, o);

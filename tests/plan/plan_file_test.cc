@@ -140,6 +140,13 @@ TEST_F(PlanFile, ErrorsNameTheKey) {
       {R"("parameters": [)" + Centre() +
            R"(], "objective": {"flat": {"select": {"edge": "middle"}, "on": "table"}})",
        "objective.flat.select.edge: "},
+      {R"("parameters": [)" + Centre() +
+           R"(], "objective": {"flat": {"side": {"line": [[0, 0], ["1 cm", 0]],
+                                                 "toward": ["5 cm", 0]}, "on": "table"}})",
+       "objective.flat.side.toward: lies on the line: it must name a side of it"},
+      {R"("parameters": [)" + Centre() +
+           R"(], "objective": {"flat": {"on": "table"}})",
+       "objective.flat: "},
       {Body(Centre(), R"(, "constraints": {"no_slip": "table"})"),
        "constraints.no_slip: the scene's contact has no friction (contact.friction = 0): nothing "
        "holds the fabric, so it cannot be told not to slip"},
