@@ -42,6 +42,8 @@ void AddPatternCommand(CLI::App& app, CommandRunner& runner);
 void AddRenderCommands(CLI::App& app, CommandRunner& runner);
 // Adds `front DIR [-o PNG]`: a study's speed–accuracy front (needs VTK).
 void AddFrontCommand(CLI::App& app, CommandRunner& runner);
+// Adds `plan-chart DIR [-o PNG]`: a plan's search drawn (needs VTK).
+void AddPlanChartCommand(CLI::App& app, CommandRunner& runner);
 // Adds `export RESULT -o DIR --format …` (its surfaces need VTK, its DXF
 // outline does not).
 void AddExportCommand(CLI::App& app, CommandRunner& runner);

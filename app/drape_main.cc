@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
 #if defined(DRAPE_WITH_RENDER) || defined(DRAPE_RENDER_PROGRAM)
   drape::app::AddRenderCommands(app, runner);
   drape::app::AddFrontCommand(app, runner);
+  drape::app::AddPlanChartCommand(app, runner);
 #endif
 
   try {

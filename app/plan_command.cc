@@ -225,6 +225,20 @@ int Emit(const PlanArgs& args, const fs::path& dir) {
   return 0;
 }
 
+// Runs `drape ARGUMENTS` (a drawing command, handed to drape-vtk) and
+// returns "<what>: <file>", or why it was not drawn.
+std::string Draw(const std::string& what, const std::string& arguments, const fs::path& file) {
+  const std::string command = ShellQuoted(SelfExecutable().string()) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return what + ": not drawn (cannot start drape)";
+  std::string output;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return what + ": " + file.string();
+  return what + ": not drawn: " + output.substr(0, output.find('\n'));
+}
+
 int RunPlan(const PlanArgs& args) {
   Plan plan;
   const fs::path dir = args.output;
@@ -261,6 +275,16 @@ int RunPlan(const PlanArgs& args) {
   signal(SIGTERM, SIG_DFL);
 
   const int code = summary.interrupted ? 130 : summary.best ? 0 : 2;
+  // The search, and the best path over the part (drape render draws the
+  // grippers' paths).
+  std::vector<std::string> pictures;
+  if (!summary.evaluations.empty())
+    pictures.push_back(Draw("chart", "plan-chart " + ShellQuoted(dir.string()), dir / "plan.png"));
+  if (summary.best)
+    pictures.push_back(Draw("best path",
+                            "render " + ShellQuoted((dir / "best" / "result").string()) + " -o " +
+                                ShellQuoted((dir / "best.png").string()) + " --step last",
+                            dir / "best.png"));
   if (args.quiet) return code;
   std::cerr << "drape plan: " << (summary.interrupted ? "interrupted after " : "")
             << summary.evaluations.size() << " evaluations (" << summary.stop_reason << ")\n";
@@ -273,6 +297,7 @@ int RunPlan(const PlanArgs& args) {
     std::cerr << "  no feasible path: " << InfeasibilityReport(plan, summary) << "\n";
   }
   std::cerr << "  table: " << (dir / "plan.csv").string() << "\n";
+  for (const std::string& line : pictures) std::cerr << "  " << line << "\n";
   return code;
 }
 

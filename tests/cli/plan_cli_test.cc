@@ -124,6 +124,14 @@ TEST_F(PlanCli, ATableOfEveryEvaluationTheBestKeptAndAFailurePenalised) {
   for (const json& step : best["steps"]) EXPECT_EQ(step["negative_pivots"], 0);
   EXPECT_TRUE(fs::is_regular_file(out / "best" / "scene.json"));
   EXPECT_NE(r.output.find("best: objective "), std::string::npos) << r.output;
+  // The pictures are drawn by drape-vtk where there is a display
+  // (tests/render/plan_chart_test.cc); else the plan says why not.
+  for (const std::string name : {"plan.png", "best.png"}) {
+    const std::string line = (name == "plan.png" ? "chart: " : "best path: ");
+    ASSERT_NE(r.output.find(line), std::string::npos) << r.output;
+    if (r.output.find(line + "not drawn: ") == std::string::npos)
+      EXPECT_TRUE(fs::is_regular_file(out / name)) << r.output;
+  }
 }
 
 // The flat term on the paper's diagonal fold: the half on the gripped
