@@ -21,10 +21,11 @@
 #include <thread>
 #include <vector>
 
-#include "app/child_process.h"
 #include "app/commands.h"
 #include "core/model/scene_error.h"
+#include "core/plan/child_process.h"
 #include "core/plan/plan_file.h"
+#include "core/plan/plan_runner.h"
 #include "core/plan/plan_search.h"
 #include "core/plan/plan_table.h"
 
@@ -48,73 +49,6 @@ extern "C" void OnPlanInterrupt(int) {
 std::string ReadAll(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return in ? std::string(std::istreambuf_iterator<char>(in), {}) : std::string();
-}
-
-fs::path EvaluationFolder(const fs::path& dir, int start, int index) {
-  char name[32];
-  std::snprintf(name, sizeof name, "s%d-e%04d", start + 1, index);
-  return dir / "evals" / name;
-}
-
-// A run that converged or failed is done; a cancelled or killed one is made
-// again.
-bool Ended(const fs::path& result) {
-  try {
-    const auto r = nlohmann::json::parse(ReadAll(result / "result.json"));
-    const std::string status = r.value("status", "");
-    return status == "converged" || status == "failed";
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
-std::vector<std::string> RunArguments(const Plan& plan, const fs::path& folder) {
-  std::vector<std::string> args = {SelfExecutable().string(),
-                                   "run",
-                                   (folder / "scene.json").string(),
-                                   "-o",
-                                   (folder / "result").string(),
-                                   "--quiet",
-                                   "--threads",
-                                   "1"};
-  if (plan.time_limit_s) {
-    char seconds[32];
-    std::snprintf(seconds, sizeof seconds, "%g", *plan.time_limit_s);
-    args.insert(args.end(), {"--time-limit", seconds});
-  }
-  return args;
-}
-
-// Runs `drape run` on the folder's scene and waits, polling so that Ctrl-C
-// reaches the child from any thread.
-void RunEvaluation(const Plan& plan, const fs::path& folder) {
-  const pid_t pid = Spawn(RunArguments(plan, folder), folder / "drape.log");
-  if (pid < 0) throw std::runtime_error("cannot start " + SelfExecutable().string());
-  bool signalled = false;
-  for (;;) {
-    int status = 0;
-    const pid_t done = waitpid(pid, &status, WNOHANG);
-    if (done == pid || (done < 0 && errno != EINTR)) return;
-    if (g_stop && !signalled) {
-      kill(pid, SIGINT);  // the run stops where it is and says cancelled
-      signalled = true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-}
-
-EvaluationOutcome Evaluate(
-    const Plan& plan, const fs::path& dir, int start, int index, const std::vector<double>& x) {
-  const fs::path folder = EvaluationFolder(dir, start, index);
-  const std::string scene = PlanSceneText(plan, x) + "\n";
-  const bool kept = ReadAll(folder / "scene.json") == scene && Ended(folder / "result");
-  if (!kept) {
-    fs::create_directories(folder);
-    fs::remove_all(folder / "result");
-    std::ofstream(folder / "scene.json") << scene;
-    RunEvaluation(plan, folder);
-  }
-  return MeasureEvaluation(plan, folder / "result");
 }
 
 // The plan kept in its folder with its scene made absolute, so that a
@@ -265,9 +199,7 @@ int RunPlan(const PlanArgs& args) {
   options.stop = &g_stop;
   const PlanSearchSummary summary = RunPlanSearch(
       plan,
-      [&](int start, int index, const std::vector<double>& x) {
-        return Evaluate(plan, dir, start, index, x);
-      },
+      PlanRunner(plan, dir, SelfExecutable(), &g_stop),
       [&](const PlanEvaluation& e) { progress(e); },
       options);
   progress.End();

@@ -26,7 +26,7 @@
 #include <thread>
 #include <vector>
 
-#include "app/child_process.h"
+#include "core/plan/child_process.h"
 #include "app/commands.h"
 #include "core/io/study_file.h"
 #include "core/io/study_table.h"

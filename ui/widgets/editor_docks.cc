@@ -1,6 +1,7 @@
 #include "ui/widgets/editor_docks.h"
 
 #include <QDockWidget>
+#include <QScrollArea>
 #include <QListWidget>
 #include <QMainWindow>
 #include <QTabWidget>
@@ -12,6 +13,7 @@
 #include "ui/widgets/model_tree.h"
 #include "ui/widgets/move_editor.h"
 #include "ui/widgets/obstacles_panel.h"
+#include "ui/widgets/plan_dock.h"
 #include "ui/widgets/probe_plot.h"
 #include "ui/widgets/probes_panel.h"
 #include "ui/widgets/property_panel.h"
@@ -95,6 +97,14 @@ void EditorDocks::DockPlots(RunMonitor* monitor) {
   AddDock("Probe plot", monitor->probePlot(), Qt::BottomDockWidgetArea, run);
   AddDock("Residuals", monitor->residualPlot(), Qt::BottomDockWidgetArea, run);
   AddDock("Reactions", monitor->reactionPlot(), Qt::BottomDockWidgetArea, run);
+  plan_ = new PlanDock(document_, window_);
+  // Scrolled: its tables must not make the bottom docks (and the window)
+  // taller than the plots need.
+  auto* scroll = new QScrollArea(window_);
+  scroll->setWidget(plan_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  AddDock("Plan", scroll, Qt::BottomDockWidgetArea, run);
   run->raise();
 }
 

@@ -22,6 +22,7 @@ class HoldsPanel;
 class LoadsPanel;
 class ModelTree;
 class ObstaclesPanel;
+class PlanDock;
 class ProbesPanel;
 class PropertyPanel;
 class RunMonitor;
@@ -42,6 +43,7 @@ class EditorDocks : public QObject {
   ObstaclesPanel* obstacles() const { return obstacles_; }
   LoadsPanel* loads() const { return loads_; }
   ProbesPanel* probes() const { return probes_; }
+  PlanDock* plan() const { return plan_; }
 
   // Every editor's fields (and the tree's summaries) in `system`.
   void setUnitSystem(UnitSystem system);
@@ -78,6 +80,7 @@ class EditorDocks : public QObject {
   HoldsPanel *supports_ = nullptr, *grippers_ = nullptr;
   ObstaclesPanel* obstacles_ = nullptr;
   LoadsPanel* loads_ = nullptr;
+  PlanDock* plan_ = nullptr;
   ProbesPanel* probes_ = nullptr;
   std::vector<QDockWidget*> editor_docks_;  // by ModelTree::Part
 };

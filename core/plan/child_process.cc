@@ -1,4 +1,4 @@
-#include "app/child_process.h"
+#include "core/plan/child_process.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -7,7 +7,7 @@
 
 extern char** environ;
 
-namespace drape::app {
+namespace drape {
 
 namespace fs = std::filesystem;
 
@@ -54,4 +54,4 @@ std::string Duration(double seconds) {
   return text;
 }
 
-}  // namespace drape::app
+}  // namespace drape

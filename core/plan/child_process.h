@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace drape::app {
+namespace drape {
 
 // This program, to start the runs with. A rebuild or reinstall while a
 // study goes on replaces the file: Linux then names the old one
@@ -26,4 +26,4 @@ std::string ShellQuoted(const std::string& text);
 // "4.2 s", "35 s", "12 min", "2.5 h".
 std::string Duration(double seconds);
 
-}  // namespace drape::app
+}  // namespace drape
