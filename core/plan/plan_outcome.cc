@@ -174,12 +174,13 @@ double PenalisedValue(const EvaluationOutcome& outcome,
   double violation = 0;
   for (const ConstraintMargin& c : outcome.constraints) violation += c.Violation();
   if (outcome.Converged() && violation == 0) return *outcome.objective;
-  if (!outcome.Converged()) violation += 2;
+  const double unfinished = 1 - std::clamp(outcome.progress, 0.0, 1.0);
+  if (!outcome.Converged()) violation += 2 * unfinished;
   if (worst_feasible) {
     const double own = outcome.Converged() ? *outcome.objective : 0.0;
     return std::max(*worst_feasible, own) + 0.1 * scale * (1 + violation);
   }
-  if (!outcome.Converged()) return 10 * scale;
+  if (!outcome.Converged()) return scale * (2 + 8 * unfinished);
   return *outcome.objective + scale * (1 + violation);
 }
 
@@ -194,6 +195,11 @@ EvaluationOutcome MeasureEvaluation(const Plan& plan, const fs::path& result_dir
     out.status = result.value("status", "unreadable");
     out.message = result.value("message", "");
     if (result.contains("timing")) out.wall_s = result["timing"].value("total_s", 0.0);
+    double reached = 0;
+    for (const json& stage : result.value("stages", json::array()))
+      reached += std::clamp(stage.value("final_lambda", 0.0), 0.0, 1.0);
+    const size_t stages = plan.scene.stages.size();
+    out.progress = stages ? std::min(1.0, reached / stages) : 0.0;
   } catch (const std::exception& e) {
     out.status = "unreadable";
     out.message = e.what();

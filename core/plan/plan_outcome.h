@@ -43,6 +43,10 @@ struct EvaluationOutcome {
   std::optional<double> objective;      // their weighted sum [m]
   std::vector<ConstraintMargin> constraints;
   std::optional<double> wall_s;
+  // How far the run got: the stages' λ reached, summed, over the scene's
+  // stage count (1: every stage completed). A failed run that got further
+  // is penalised less, so the search can tell which way failures recede.
+  double progress = 0;
 
   bool Converged() const { return status == "converged" && objective.has_value(); }
   bool Feasible() const;

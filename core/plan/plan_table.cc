@@ -49,7 +49,7 @@ void WritePlanCsv(const Plan& plan,
   out << ",path_length_m";
   const auto constraints = ConstraintColumns(plan.constraints);
   for (const auto& [name, unit] : constraints) out << "," << name << "_margin_" << unit;
-  out << ",status,feasible,search_value_m,wall_s\n";
+  out << ",status,progress,feasible,search_value_m,wall_s\n";
   for (const PlanEvaluation& e : evaluations) {
     const EvaluationOutcome& o = e.outcome;
     out << e.start + 1 << "," << e.index;
@@ -71,8 +71,8 @@ void WritePlanCsv(const Plan& plan,
         if (c.name == name) margin = c.margin;
       out << "," << Cell(margin);
     }
-    out << "," << o.status << "," << (o.Feasible() ? "yes" : "no") << "," << Cell(e.value) << ","
-        << Cell(o.wall_s) << "\n";
+    out << "," << o.status << "," << Cell(o.progress) << "," << (o.Feasible() ? "yes" : "no") << ","
+        << Cell(e.value) << "," << Cell(o.wall_s) << "\n";
   }
   if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
 }

@@ -99,6 +99,10 @@ TEST(PlanSearch, PenaltiesBeforeAnyFeasiblePoint) {
   EvaluationOutcome failed;
   failed.status = "failed";
   EXPECT_EQ(PenalisedValue(failed, 0.2), 2.0);
+  failed.progress = 0.75;  // three of four stages done: a quarter unfinished
+  EXPECT_NEAR(PenalisedValue(failed, 0.2), 0.2 * (2 + 8 * 0.25), 1e-15);
+  EXPECT_NEAR(PenalisedValue(failed, 0.2, 0.05), 0.05 + 0.02 * (1 + 2 * 0.25), 1e-15);
+  failed.progress = 0;
   EvaluationOutcome unstable = DistanceFrom(0, 180, {0.01, 180});
   unstable.constraints[0].margin = -2;  // two negative pivots
   EXPECT_FALSE(unstable.Feasible());

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/solve/solve_summary.h"
 #include "ui/widgets/main_window.h"
 #include "ui/widgets/scene_document.h"
@@ -47,8 +49,9 @@ inline std::string TemplateName(const ::testing::TestParamInfo<SceneTemplate>& i
   return name;
 }
 
-// Opens `entry` by its menu item and runs it to its end.
-inline void OpenAndRun(const SceneTemplate& entry) {
+// Opens `entry` by its menu item and runs it to its end; with `preset`,
+// after choosing that solver preset (as the Solver group's combo does).
+inline void OpenAndRun(const SceneTemplate& entry, const char* preset = nullptr) {
   MainWindow window;
   window.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
@@ -60,6 +63,13 @@ inline void OpenAndRun(const SceneTemplate& entry) {
   ASSERT_NE(window.document()->model(), nullptr) << window.document()->modelProblem().toStdString();
   EXPECT_TRUE(window.document()->file().isEmpty()) << "a template opens untitled";
   EXPECT_TRUE(window.windowTitle().startsWith("untitled"));
+  if (preset) {
+    auto document = window.document()->json();
+    document["solver"]["preset"] = preset;
+    QString problem;
+    ASSERT_TRUE(window.document()->tryApplyJson(preset, document, &problem))
+        << problem.toStdString();
+  }
   QSignalSpy finished(&window, &MainWindow::runFinished);
   QElapsedTimer clock;
   clock.start();
