@@ -90,9 +90,8 @@ void MeasureGrippers(const Plan& plan,
   }
 }
 
-// Reference coordinates: z = 0 is the pattern's plane (an elevated
-// fabric keeps its x and y). A node within 1e-9 of the diagonal's length
-// of the line belongs to both sides.
+// In the reference x and y (an elevated fabric keeps them). A node on the
+// line, to round-off, belongs to the side.
 std::vector<int> NodesOnSide(const SideOfLine& side, const Mesh& mesh) {
   const Eigen::Vector2d a(side.from[0], side.from[1]), b(side.to[0], side.to[1]),
       t(side.toward[0], side.toward[1]);

@@ -1,13 +1,14 @@
-// `drape export RESULT --format trajectory`: the strip fold's gripper,
+// `drape export RESULT --format trajectory`: the 20-element strip fold's
+// gripper (resources/scenes/strip-convergence-20.json),
 // checked step by step against what the run stored of the gripped end
 // (states.bin: the left edge's nodes and their directors) and against the
 // arc's length at the stated speed.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
-#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -26,8 +27,8 @@ TEST(TrajectoryCli, TheGrippersPoseTimeAndForceAreTheRunsOwn) {
   const fs::path dir = fs::temp_directory_path() / ("drape-trajectory-" + std::to_string(getpid()));
   fs::remove_all(dir);
   const test::CommandResult run =
-      test::RunDrape("run '" + (test::ScenesDir() / "strip-fold.json").string() + "' -o '" +
-                     (dir / "result").string() + "' --quiet");
+      test::RunDrape("run '" + (test::ScenesDir() / "strip-convergence-20.json").string() +
+                     "' -o '" + (dir / "result").string() + "' --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const test::CommandResult exported =
       test::RunDrape("export '" + (dir / "result").string() + "' -o '" + (dir / "out").string() +
@@ -43,14 +44,14 @@ TEST(TrajectoryCli, TheGrippersPoseTimeAndForceAreTheRunsOwn) {
   std::vector<int> end;
   for (int n = 0; n < states.mesh.NodeCount(); ++n)
     if (std::abs(states.mesh.positions(n, 0) + 0.1) < 1e-9) end.push_back(n);
-  ASSERT_EQ(end.size(), 3u);  // 80 × 2 elements: three nodes across
-  const double c = 0.035175e-2, radius = std::hypot(0.1, c), speed = 0.05;
+  ASSERT_EQ(end.size(), 2u);  // 20 × 1 elements: two nodes across
+  const double c = 0.036675e-2, radius = std::hypot(0.1, c), speed = 0.05;
   for (size_t i = 0; i < states.steps.size(); ++i) {
     const auto& row = rows[i + 1];
     const StoredStep& s = states.steps[i];
     EXPECT_EQ(std::stoi(row[Column(h, "step")]), s.step);
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (int n : end) centroid += s.positions.row(n).transpose() / 3.0;
+    for (int n : end) centroid += s.positions.row(n).transpose() / 2.0;
     const Eigen::Vector3d at(std::stod(row[Column(h, "end_x_m")]),
                              std::stod(row[Column(h, "end_y_m")]),
                              std::stod(row[Column(h, "end_z_m")]));
@@ -69,11 +70,9 @@ TEST(TrajectoryCli, TheGrippersPoseTimeAndForceAreTheRunsOwn) {
       EXPECT_NEAR(std::stod(row[Column(h, std::string("end_f") + "xyz"[k] + "_N")]),
                   force[k].get<double>(),
                   1e-11 + 1e-9 * std::abs(force[k].get<double>()));
-    // Time: none in SW, the arc π r λ, then T's 1 cm λ, at 5 cm/s.
+    // Time: none in SW, then the arc π r λ at 5 cm/s.
     const double lambda = std::stod(row[Column(h, "lambda")]);
-    const double expected = s.stage == 0   ? 0
-                            : s.stage == 1 ? M_PI * radius * lambda / speed
-                                           : (M_PI * radius + 0.01 * lambda) / speed;
+    const double expected = s.stage == 0 ? 0 : M_PI * radius * lambda / speed;
     EXPECT_NEAR(std::stod(row[Column(h, "time_s")]), expected, 1e-5 * (1 + expected));
     EXPECT_EQ(row[Column(h, "end_held")], "1");
   }
