@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "core/io/text_file.h"
 #include "core/model/scene_error.h"
 #include "core/plan/child_process.h"
 #include "core/plan/plan_file.h"
@@ -46,15 +47,11 @@ extern "C" void OnPlanInterrupt(int) {
   g_stop = true;
 }
 
-std::string ReadAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return in ? std::string(std::istreambuf_iterator<char>(in), {}) : std::string();
-}
-
 // The plan kept in its folder with its scene made absolute, so that a
 // rerun (and the workbench) reads it from there.
 void KeepPlan(const Plan& plan, const fs::path& dir) {
-  nlohmann::ordered_json document = nlohmann::ordered_json::parse(ReadAll(plan.file));
+  nlohmann::ordered_json document =
+      nlohmann::ordered_json::parse(ReadTextFile(plan.file, "plan file"));
   document["scene"] = plan.scene_file.string();
   const fs::path kept = dir / "plan.json";
   if (fs::exists(kept) && fs::equivalent(kept, plan.file)) return;

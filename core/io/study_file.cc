@@ -4,11 +4,11 @@
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 #include "core/io/json_cursor.h"
 #include "core/io/scene_key.h"
 #include "core/io/scene_reader.h"
+#include "core/io/text_file.h"
 #include "core/model/scene_error.h"
 
 namespace drape {
@@ -22,16 +22,6 @@ constexpr int kStudyFormatVersion = 1;
 // A grid larger than this is almost surely a mistake (a list where a value
 // was meant); runs are processes, each taking seconds to hours.
 constexpr size_t kMaxRuns = 100000;
-
-std::string ReadText(const fs::path& file, const std::string& what) {
-  std::ifstream in(file, std::ios::binary);
-  std::error_code ec;
-  if (!in || fs::is_directory(file, ec))
-    throw SceneError("", "cannot open " + what + " '" + file.string() + "'");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 // `ordered` is the same object as `settings` read with its keys in the
 // order the user wrote them (the columns of study.csv follow it).
@@ -124,7 +114,7 @@ Study ReadStudy(const fs::path& file) {
   json document;
   ordered_json ordered;
   try {
-    const std::string text = ReadText(study.file, "study file");
+    const std::string text = ReadTextFile(study.file, "study file");
     document = json::parse(text);
     ordered = ordered_json::parse(text);
   } catch (const json::parse_error& e) {
@@ -138,7 +128,7 @@ Study ReadStudy(const fs::path& file) {
   const JsonCursor scene = root["scene"];
   study.scene_file = (study.file.parent_path() / scene.String()).lexically_normal();
   try {
-    study.scene_text = ReadText(study.scene_file, "scene file");
+    study.scene_text = ReadTextFile(study.scene_file, "scene file");
   } catch (const SceneError& e) {
     scene.Fail(e.message());
   }

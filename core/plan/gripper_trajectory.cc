@@ -7,6 +7,7 @@
 
 #include "core/fe/prescribed_motion.h"
 #include "core/model/node_selection.h"
+#include "core/plan/held_nodes.h"
 
 namespace drape {
 namespace {
@@ -36,13 +37,6 @@ const Path* PathOf(const Stage& stage, const std::string& gripper) {
   return nullptr;
 }
 
-int ReleaseStage(const Scene& scene, const std::string& gripper) {
-  for (size_t s = 0; s < scene.stages.size(); ++s)
-    for (const std::string& name : scene.stages[s].release)
-      if (name == gripper) return static_cast<int>(s);
-  return std::numeric_limits<int>::max();
-}
-
 // The length of the path a point x₀ travels from λ = 0 to `lambda`.
 double LengthTo(const Path& path, const Eigen::Vector3d& x0, double lambda) {
   double length = 0;
@@ -65,10 +59,8 @@ std::vector<TrajectoryPoint> GripperTrajectory(const RunRecord& record, double s
   std::vector<Eigen::Vector3d> start(count);  // each gripper's centroid in the reference
   std::vector<int> releases(count);
   for (size_t g = 0; g < count; ++g) {
-    const std::vector<int> nodes = SelectNodesInParts(scene.grippers[g].select, scene, record.mesh);
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int n : nodes) sum += record.mesh.positions.row(n).transpose();
-    start[g] = sum / std::max<size_t>(1, nodes.size());
+    start[g] = Centroid(record.mesh.positions,
+                        SelectNodesInParts(scene.grippers[g].select, scene, record.mesh));
     releases[g] = ReleaseStage(scene, scene.grippers[g].name);
   }
   // Poses at the start of each stage, and the time each stage starts at.

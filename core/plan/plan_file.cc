@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 #include "core/io/json_cursor.h"
 #include "core/io/scene_key.h"
 #include "core/io/scene_reader.h"
 #include "core/io/selection_reader.h"
+#include "core/io/text_file.h"
 #include "core/model/scene_error.h"
 
 namespace drape {
@@ -24,16 +24,6 @@ constexpr int kPlanFormatVersion = 1;
 // More parameters than a derivative-free search can handle in a few hundred
 // runs: BOBYQA alone needs 2n + 1 runs to build its first model.
 constexpr size_t kMaxParameters = 20;
-
-std::string ReadText(const fs::path& file, const std::string& what) {
-  std::ifstream in(file, std::ios::binary);
-  std::error_code ec;
-  if (!in || fs::is_directory(file, ec))
-    throw SceneError("", "cannot open " + what + " '" + file.string() + "'");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 // "2 cm" → "cm"; a bare number has no unit.
 std::string UnitOf(const json& value) {
@@ -284,7 +274,7 @@ Plan ReadPlan(const fs::path& file) {
   plan.file = fs::absolute(file).lexically_normal();
   json document;
   try {
-    document = json::parse(ReadText(plan.file, "plan file"));
+    document = json::parse(ReadTextFile(plan.file, "plan file"));
   } catch (const json::parse_error& e) {
     throw SceneError("", "not valid JSON: " + std::string(e.what()));
   }
@@ -303,7 +293,7 @@ Plan ReadPlan(const fs::path& file) {
   plan.scene_file = (plan.file.parent_path() / scene_key.String()).lexically_normal();
   ordered_json scene;
   try {
-    plan.scene_text = ReadText(plan.scene_file, "scene file");
+    plan.scene_text = ReadTextFile(plan.scene_file, "scene file");
     scene = ordered_json::parse(plan.scene_text);
     plan.scene = ParseScene(plan.scene_text, plan.scene_file.parent_path());
   } catch (const SceneError& e) {

@@ -12,6 +12,7 @@
 #include "core/model/node_selection.h"
 #include "core/model/obstacle_geometry.h"
 #include "core/model/outline_geometry.h"
+#include "core/plan/held_nodes.h"
 
 namespace drape {
 namespace {
@@ -28,20 +29,6 @@ struct Worst {
     if (v < value) value = v, step = at;
   }
 };
-
-int FirstReleaseStage(const Scene& scene, const std::string& gripper) {
-  for (size_t s = 0; s < scene.stages.size(); ++s)
-    for (const std::string& name : scene.stages[s].release)
-      if (name == gripper) return static_cast<int>(s);
-  return std::numeric_limits<int>::max();
-}
-
-Eigen::Vector3d Centroid(const Eigen::Matrix<double, Eigen::Dynamic, 3>& x,
-                         const std::vector<int>& nodes) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int n : nodes) sum += x.row(n).transpose();
-  return sum / static_cast<double>(std::max<size_t>(1, nodes.size()));
-}
 
 size_t ObstacleIndex(const Scene& scene, const std::string& name) {
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
@@ -67,7 +54,7 @@ void MeasureGrippers(const Plan& plan,
   path_length = 0;
   for (const Gripper& gripper : scene.grippers) {
     const std::vector<int> nodes = SelectNodesInParts(gripper.select, scene, record.mesh);
-    const int released = FirstReleaseStage(scene, gripper.name);
+    const int released = ReleaseStage(scene, gripper.name);
     std::optional<Eigen::Vector3d> last;
     for (size_t i = 0; i < record.states.size(); ++i) {
       const StoredStep& state = record.states[i];

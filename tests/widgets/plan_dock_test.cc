@@ -74,7 +74,9 @@ TEST_F(Widgets, PlanDockSearchesAcceptsTheBestPathAndUndoes) {
   // The first evaluation is the scene as it is: 176 degrees.
   const double first = dock->results()->item(0, 1)->text().toDouble();
   const double best = *dock->best()->outcome.objective * 1e3;
-  EXPECT_LT(best, first / 3) << dock->message().toStdString();
+  // 180° lands the end on its target (the bound: COBYLA ends there).
+  EXPECT_LT(best, 0.1) << dock->message().toStdString();
+  EXPECT_GT(first, 5);
   EXPECT_TRUE(dock->acceptButton()->isEnabled());
 
   // Accepted: the scene's arc turns by the best angle; undo puts 176 back.

@@ -201,10 +201,7 @@ void WriteFrontChart(const std::vector<FrontPoint>& points,
   // A decade of room on the right for the labels.
   DecadeTicks(x, x_lo, x_hi + 0.5);
   DecadeTicks(y, y_lo, y_hi);
-  for (vtkAxis* a : {x, y}) {
-    a->GetTitleProperties()->SetFontSize(15);
-    a->GetLabelProperties()->SetFontSize(13);
-  }
+  drawing.StyleAxes();
 
   drawing.Render();
   drawing.WritePng(png);

@@ -1,5 +1,6 @@
 #include "ui/render/offscreen_chart.h"
 
+#include <vtkAxis.h>
 #include <vtkContextScene.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -17,6 +18,14 @@ OffscreenChart::OffscreenChart(int width, int height, const std::string& title) 
   view->GetScene()->AddItem(chart);
   chart->SetTitle(title);
   chart->GetTitleProperties()->SetFontSize(18);
+}
+
+void OffscreenChart::StyleAxes() {
+  for (int side : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
+    vtkAxis* a = chart->GetAxis(side);
+    a->GetTitleProperties()->SetFontSize(15);
+    a->GetLabelProperties()->SetFontSize(13);
+  }
 }
 
 void OffscreenChart::Render() {

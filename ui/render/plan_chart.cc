@@ -128,10 +128,7 @@ void WritePlanChart(const std::vector<PlanChartPoint>& points,
   x->SetBehavior(vtkAxis::FIXED);
   x->SetRange(0.5, points.back().evaluation + 0.5);
   MillimetreDecades(y, first, top);
-  for (vtkAxis* a : {x, y}) {
-    a->GetTitleProperties()->SetFontSize(15);
-    a->GetLabelProperties()->SetFontSize(13);
-  }
+  drawing.StyleAxes();
   drawing.Render();
   drawing.WritePng(png);
 }

@@ -238,10 +238,7 @@ ChartArea WriteReactionChart(const std::vector<ReactionSeries>& series,
   x->SetRange(step_lo, step_hi);
   y->SetBehavior(vtkAxis::FIXED);
   y->SetRange(0, force_hi);
-  for (vtkAxis* a : {x, y}) {
-    a->GetTitleProperties()->SetFontSize(15);
-    a->GetLabelProperties()->SetFontSize(13);
-  }
+  drawing.StyleAxes();
 
   drawing.Render();
   ChartArea area = AreaOf(x, y);
